@@ -87,6 +87,41 @@ def _require_fit(ratio: FloatArray, d_s: FloatArray, n: FloatArray, d_o: FloatAr
     )
 
 
+def max_strand_count(
+    strand_diameter_m: npt.ArrayLike, theoretical_diameter_m: npt.ArrayLike
+) -> Floats:
+    r"""Largest number of strands that fit around the braid side by side.
+
+    .. math:: N_{max} = \max\{N \in \mathbb{Z} : D_s N < \pi D_o\}
+
+    the limit of eq 8, where :math:`\theta_{min}` reaches 45° and the braid cannot move.
+
+    Parameters
+    ----------
+    strand_diameter_m : array_like
+        :math:`D_s`, diameter of one strand [m].
+    theoretical_diameter_m : array_like
+        :math:`D_o`, braid diameter at 90° [m].
+
+    Returns
+    -------
+    numpy.float64 or numpy.ndarray
+        :math:`N_{max}` [-], a whole number.
+
+    References
+    ----------
+    Davis & Caldwell 2006, eq 8. :doi:`10.1177/0278364906063227`
+
+    Examples
+    --------
+    >>> int(max_strand_count(0.25e-3, 0.031))
+    389
+    """
+    d_s = check.positive("strand_diameter_m", strand_diameter_m)
+    d_o = check.positive("theoretical_diameter_m", theoretical_diameter_m)
+    return check.scalar_or_array(np.ceil(np.pi * d_o / d_s) - 1.0)
+
+
 def min_braid_angle(
     strand_diameter_m: npt.ArrayLike,
     strand_count: npt.ArrayLike,

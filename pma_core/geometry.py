@@ -92,6 +92,37 @@ def turns(strand_length_m: npt.ArrayLike, theoretical_diameter_m: npt.ArrayLike)
     return check.scalar_or_array(b / (np.pi * d_o))
 
 
+def strand_length(turns: npt.ArrayLike, theoretical_diameter_m: npt.ArrayLike) -> Floats:
+    """Length of one braid strand, eq 1 solved for :math:`b`.
+
+    .. math:: b = n \\pi D_o \\qquad (1)
+
+    Parameters
+    ----------
+    turns : array_like
+        :math:`n`, turns of one strand around the actuator [-].
+    theoretical_diameter_m : array_like
+        :math:`D_o`, braid diameter at 90° [m].
+
+    Returns
+    -------
+    numpy.float64 or numpy.ndarray
+        :math:`b` [m].
+
+    References
+    ----------
+    Davis & Caldwell 2006, eq 1. :doi:`10.1177/0278364906063227`
+
+    Examples
+    --------
+    >>> round(float(strand_length(4.7, 0.65 / (4.7 * 3.141592653589793))), 6)
+    0.65
+    """
+    n = check.positive("turns", turns)
+    d_o = check.positive("theoretical_diameter_m", theoretical_diameter_m)
+    return check.scalar_or_array(n * np.pi * d_o)
+
+
 def actuator_diameter(
     theoretical_diameter_m: npt.ArrayLike, braid_angle_rad: npt.ArrayLike
 ) -> Floats:

@@ -1,0 +1,74 @@
+"""Turn bad input into 422s that name the field, in FastAPI's usual ``detail`` shape."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Container, Iterator
+from contextlib import contextmanager
+from typing import Any
+
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.responses import Response
+
+from app.responses import JSONResponse
+
+# pma_core names parameters in radians where the API takes degrees.
+_CORE_TO_FIELD = {"braid_angle_rad": "braid_angle_deg"}
+_LEADING_NAME = re.compile(r"^([a-z_][a-z0-9_]*)\b")
+
+
+def field_error(field: str, message: str) -> RequestValidationError:
+    """A 422 for one body ``field``, with ``message`` in words a user understands."""
+    return RequestValidationError([{"loc": ("body", field), "msg": message, "type": "value_error"}])
+
+
+@contextmanager
+def core_errors(fields: Container[str]) -> Iterator[None]:
+    """Re-raise a :class:`ValueError` from pma_core as a 422 on the field it names.
+
+    pma_core messages start with the parameter's name; where that is not a body field
+    (a derived quantity), the error is reported on the body as a whole.
+    """
+    try:
+        yield
+    except ValueError as error:
+        message = str(error)
+        match = _LEADING_NAME.match(message)
+        name = _CORE_TO_FIELD.get(match.group(1), match.group(1)) if match else ""
+        loc: tuple[str, ...] = ("body", name) if name in fields else ("body",)
+        detail = [{"loc": loc, "msg": message, "type": "value_error"}]
+        raise RequestValidationError(detail) from None
+
+
+def _clean(error: dict[str, Any]) -> dict[str, Any]:
+    # Only loc, msg and type: "input" may hold NaN (not JSON) or a large body, and "ctx"
+    # may hold exception objects.
+    msg = str(error.get("msg", "invalid value")).removeprefix("Value error, ")
+    return {"loc": list(error.get("loc", ())), "msg": msg, "type": error.get("type", "value_error")}
+
+
+async def _validation_handler(request: Request, exc: Exception) -> Response:
+    assert isinstance(exc, RequestValidationError)
+    return JSONResponse({"detail": [_clean(e) for e in exc.errors()]}, status_code=422)
+
+
+async def _http_handler(request: Request, exc: Exception) -> Response:
+    assert isinstance(exc, StarletteHTTPException)
+    headers = getattr(exc, "headers", None)
+    if exc.status_code in (204, 304) or exc.status_code < 200:
+        return Response(status_code=exc.status_code, headers=headers)
+    return JSONResponse({"detail": exc.detail}, status_code=exc.status_code, headers=headers)
+
+
+async def _unexpected_handler(request: Request, exc: Exception) -> Response:
+    # Never leak a stack trace or an internal path.
+    return JSONResponse({"detail": "internal error"}, status_code=500)
+
+
+def install_error_handlers(app: FastAPI) -> None:
+    """Register the 422, HTTP error and last-resort handlers on ``app``."""
+    app.add_exception_handler(RequestValidationError, _validation_handler)
+    app.add_exception_handler(StarletteHTTPException, _http_handler)
+    app.add_exception_handler(Exception, _unexpected_handler)

@@ -1,0 +1,60 @@
+"""The PMA calculator service: ``uvicorn app.main:app``."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from fastapi import FastAPI
+from starlette.middleware.cors import CORSMiddleware
+from starlette.middleware.gzip import GZipMiddleware
+
+from app import __doc__ as _summary
+from app.errors import install_error_handlers
+from app.responses import JSONResponse
+from app.routes import calculations, design, reference
+from app.settings import Settings
+
+_PACKAGED_STATIC = Path(__file__).parent / "static"
+#: The page's files: packaged in the wheel as app/static, the repo's static/ in development.
+STATIC_DIR = (
+    _PACKAGED_STATIC if _PACKAGED_STATIC.is_dir() else Path(__file__).parent.parent / "static"
+)
+
+DESCRIPTION = """
+Braided pneumatic muscle (McKibben) calculator implementing S. Davis and D. G. Caldwell,
+"Braid Effects on Contractile Range and Friction Modeling in Pneumatic Muscle Actuators",
+IJRR 25(4) 2006, doi:10.1177/0278364906063227.
+
+SI units everywhere (`_m`, `_m2`, `_pa`, `_n`); angles in degrees (`_deg`). Bad input is a
+422 whose `detail` names the field. Examples use the paper's braid: D_o = 31 mm,
+D_s = 0.25 mm, N = 240, S = 3.
+"""
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    """Build the application from ``settings`` (default: the ``PMA_*`` environment)."""
+    settings = settings or Settings.from_env()
+    app = FastAPI(
+        title="PMA Calculator",
+        version="1.0.0",
+        summary=_summary,
+        description=DESCRIPTION,
+        root_path=settings.root_path,
+        default_response_class=JSONResponse,
+    )
+    install_error_handlers(app)
+    app.include_router(calculations.router)
+    app.include_router(design.router)
+    app.include_router(reference.router)
+    app.add_middleware(GZipMiddleware, minimum_size=1024)
+    if settings.cors_origins:
+        app.add_middleware(
+            CORSMiddleware,
+            allow_origins=list(settings.cors_origins),
+            allow_methods=["GET", "POST"],
+            allow_headers=["Content-Type", "Accept"],
+        )
+    return app
+
+
+app = create_app()

@@ -1,0 +1,156 @@
+"""The five v1 calculations of API.md: JSON in, pma_core, JSON out."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from fastapi import APIRouter
+
+from app.errors import core_errors
+from app.geometry import Geometry
+from app.responses import JSONResponse
+from app.schemas import (
+    FailureStrandCountIn,
+    FailureStrandCountOut,
+    GapAreaIn,
+    GapAreaOut,
+    HysteresisIn,
+    HysteresisOut,
+    MinBraidAngleIn,
+    MinBraidAngleOut,
+    SScaleIn,
+    SScaleOut,
+)
+from pma_core import braid, friction, gap, strength
+from pma_core.hysteresis import hysteresis_curves
+
+router = APIRouter(prefix="/api/v1", tags=["calculations"], default_response_class=JSONResponse)
+
+
+def _deg(rad: Any) -> float:
+    return float(np.degrees(rad))
+
+
+@router.post("/min-braid-angle", response_model=MinBraidAngleOut)
+async def min_braid_angle(body: MinBraidAngleIn) -> JSONResponse:
+    """Minimum braid angle θ_min (eq 8), the angle range and the contractile range (eq 9)."""
+    with core_errors(MinBraidAngleIn.model_fields):
+        geo = body.geometry()
+        args = (body.strand_diameter_m, body.strand_count, geo.theoretical_diameter_m)
+        result: dict[str, float | None] = {
+            "min_braid_angle_deg": _deg(braid.min_braid_angle(*args)),
+            "max_braid_angle_deg": _deg(braid.max_braid_angle(*args)),
+            "jamming_angle_deg": _deg(braid.jamming_angle(*args)),
+            "max_contraction": float(braid.max_contraction(*args)),
+            "theoretical_diameter_m": geo.theoretical_diameter_m,
+        }
+        result.update(_lengths(geo, body.strand_diameter_m, body.strand_count))
+    return JSONResponse(result)
+
+
+def _lengths(geo: Geometry, strand_diameter_m: float, strand_count: int) -> dict[str, float | None]:
+    if geo.strand_length_m is None or geo.turns is None:
+        return {"max_length_m": None, "min_length_m": None, "stroke_m": None}
+    args = (geo.strand_length_m, geo.turns, strand_diameter_m, strand_count)
+    return {
+        "max_length_m": float(braid.max_length(*args)),
+        "min_length_m": float(braid.min_length(*args)),
+        "stroke_m": float(braid.stroke(*args)),
+    }
+
+
+@router.post("/gap-area", response_model=GapAreaOut)
+async def gap_area(body: GapAreaIn) -> JSONResponse:
+    """Node spacing G (eq 12), gap width Z (eq 14) and gap area at θ, and the 45° maximum."""
+    with core_errors(GapAreaIn.model_fields):
+        d_o = body.geometry().theoretical_diameter_m
+        args = (d_o, body.strand_diameter_m, body.strand_count, body.parallel_strands)
+        theta = np.radians(body.braid_angle_deg)
+        width = float(gap.gap_width(*args, theta))
+        area = float(gap.gap_area(*args, theta))
+        spacing = float(gap.node_spacing(d_o, body.strand_count, body.parallel_strands, theta))
+        max_area = float(gap.max_gap_area(*args))
+    return JSONResponse(
+        {
+            "braid_angle_deg": body.braid_angle_deg,
+            "node_spacing_m": spacing,
+            "gap_width_m": width,
+            "gap_area_m2": area,
+            "max_gap_area_m2": max_area,
+        }
+    )
+
+
+@router.post("/failure-strand-count", response_model=FailureStrandCountOut)
+async def failure_strand_count(body: FailureStrandCountIn) -> JSONResponse:
+    """Fewest strands that hold the pressure (eq 20), at θ and at the 45° worst case."""
+    with core_errors(FailureStrandCountIn.model_fields):
+        d_o = body.geometry().theoretical_diameter_m
+        args = (body.pressure_pa, d_o, body.strand_diameter_m, body.tensile_strength_pa)
+        angles = np.radians([body.braid_angle_deg, 45.0])
+        exact = strength.failure_strand_count(*args, angles, body.safety_factor)
+        whole = strength.min_strand_count(exact)
+    return JSONResponse(
+        {
+            "braid_angle_deg": body.braid_angle_deg,
+            "min_strand_count_exact": float(exact[0]),
+            "min_strand_count": int(whole[0]),
+            "worst_case_braid_angle_deg": 45.0,
+            "worst_case_min_strand_count_exact": float(exact[1]),
+            "worst_case_min_strand_count": int(whole[1]),
+        }
+    )
+
+
+@router.post("/s-scale", response_model=SScaleOut)
+async def s_scale(body: SScaleIn) -> JSONResponse:
+    """Contact scale factor S_scale (eq 34) from the Hertz radius of two spheres (eq 33)."""
+    with core_errors(SScaleIn.model_fields):
+        args = (body.pressure_pa, body.strand_diameter_m, body.youngs_modulus_pa)
+        radius = float(friction.hertz_contact_radius(*args, body.poisson_ratio))
+        scale = float(friction.s_scale(*args, body.poisson_ratio))
+        force = float(friction.compressive_force(body.pressure_pa, body.strand_diameter_m))
+    return JSONResponse(
+        {
+            "s_scale": scale,
+            "contact_radius_m": radius,
+            "flat_contact_radius_m": body.strand_diameter_m / 2.0,
+            "compressive_force_n": force,
+        }
+    )
+
+
+@router.post("/hysteresis", response_model=HysteresisOut)
+async def hysteresis(body: HysteresisIn) -> JSONResponse:
+    """Static force and both friction branches along the stroke (eqs 10, 29-31)."""
+    with core_errors(HysteresisIn.model_fields):
+        geo = body.geometry(need_length=True)
+        assert geo.strand_length_m is not None
+        assert geo.turns is not None
+        curves = hysteresis_curves(
+            geo.strand_length_m,
+            geo.turns,
+            body.strand_diameter_m,
+            body.strand_count,
+            body.pressure_pa,
+            body.friction_coefficient,
+            body.youngs_modulus_pa,
+            body.poisson_ratio,
+            s_scale=body.s_scale,
+            points=body.points,
+        )
+    return JSONResponse(
+        {
+            "s_scale": curves.s_scale,
+            "min_braid_angle_deg": _deg(curves.min_braid_angle_rad),
+            "max_braid_angle_deg": _deg(curves.max_braid_angle_rad),
+            "braid_angle_deg": np.degrees(curves.braid_angle_rad),
+            "length_m": curves.length_m,
+            "contraction": curves.contraction,
+            "force_static_n": curves.force_static_n,
+            "friction_force_n": curves.friction_force_n,
+            "force_contracting_n": curves.force_contracting_n,
+            "force_extending_n": curves.force_extending_n,
+        }
+    )
