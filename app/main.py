@@ -8,11 +8,12 @@ from fastapi import FastAPI
 from starlette.middleware.cors import CORSMiddleware
 from starlette.middleware.gzip import GZipMiddleware
 
-from app import __doc__ as _summary
+from app.docs import install_docs
 from app.errors import install_error_handlers
 from app.responses import JSONResponse
 from app.routes import calculations, design, reference
 from app.settings import Settings
+from app.web import install_web
 
 _PACKAGED_STATIC = Path(__file__).parent / "static"
 #: The page's files: packaged in the wheel as app/static, the repo's static/ in development.
@@ -37,15 +38,19 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app = FastAPI(
         title="PMA Calculator",
         version="1.0.0",
-        summary=_summary,
+        summary="Braid limits, strength, friction and hysteresis of pneumatic muscles",
         description=DESCRIPTION,
         root_path=settings.root_path,
         default_response_class=JSONResponse,
+        docs_url=None,
+        redoc_url=None,
     )
     install_error_handlers(app)
     app.include_router(calculations.router)
     app.include_router(design.router)
     app.include_router(reference.router)
+    install_docs(app)
+    install_web(app, STATIC_DIR)
     app.add_middleware(GZipMiddleware, minimum_size=1024)
     if settings.cors_origins:
         app.add_middleware(
