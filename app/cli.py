@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 import uvicorn
 
+from app.logs import log_config
 from app.settings import LOG_LEVELS, Settings
 
 
@@ -18,6 +19,8 @@ def _serve(args: argparse.Namespace) -> int:
         workers=None if args.reload else args.workers,
         reload=args.reload,
         log_level=args.log_level,
+        log_config=log_config(args.log_level),
+        access_log=False,  # app.middleware logs each request as JSON, with its id
         root_path=args.root_path,
         proxy_headers=True,
     )

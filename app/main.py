@@ -10,6 +10,7 @@ from starlette.middleware.gzip import GZipMiddleware
 
 from app.docs import install_docs
 from app.errors import install_error_handlers
+from app.middleware import BodyLimitMiddleware, RequestContextMiddleware
 from app.responses import JSONResponse
 from app.routes import calculations, design, reference
 from app.settings import Settings
@@ -52,6 +53,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     install_docs(app)
     install_web(app, STATIC_DIR)
     app.add_middleware(GZipMiddleware, minimum_size=1024)
+    app.add_middleware(BodyLimitMiddleware)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,
@@ -59,6 +61,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             allow_methods=["GET", "POST"],
             allow_headers=["Content-Type", "Accept"],
         )
+    app.add_middleware(RequestContextMiddleware)
     return app
 
 

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
+import numpy as np
+import numpy.typing as npt
 import orjson
 from starlette.responses import Response
 
@@ -21,3 +24,20 @@ class JSONResponse(Response):
 
     def render(self, content: Any) -> bytes:
         return orjson.dumps(content, option=_OPTIONS)
+
+
+class CSVResponse(Response):
+    """``text/csv`` with a header row; see :func:`csv_bytes`."""
+
+    media_type = "text/csv"
+
+
+def csv_bytes(columns: Mapping[str, npt.NDArray[np.float64]]) -> bytes:
+    """CSV of equal-length numeric columns, without per-element Python work.
+
+    orjson writes the 2-D array as ``[[a,b],[c,d]]`` with shortest round-trip floats;
+    the row brackets become line breaks. A number never contains ``[``, ``]`` or ``,``.
+    """
+    table = np.column_stack(list(columns.values()))
+    body = orjson.dumps(table, option=orjson.OPT_SERIALIZE_NUMPY)[2:-2].replace(b"],[", b"\n")
+    return ",".join(columns).encode() + b"\n" + body + b"\n"

@@ -2,14 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any, Literal
 
 import numpy as np
-from fastapi import APIRouter
+from fastapi import APIRouter, Header, Query
+from starlette.responses import Response
 
 from app.errors import core_errors
 from app.geometry import Geometry
-from app.responses import JSONResponse
+from app.responses import CSVResponse, JSONResponse, csv_bytes
 from app.schemas import (
     FailureStrandCountIn,
     FailureStrandCountOut,
@@ -121,9 +122,24 @@ async def s_scale(body: SScaleIn) -> JSONResponse:
     )
 
 
-@router.post("/hysteresis", response_model=HysteresisOut)
-async def hysteresis(body: HysteresisIn) -> JSONResponse:
-    """Static force and both friction branches along the stroke (eqs 10, 29-31)."""
+_CSV = {
+    200: {"content": {"text/csv": {"example": "contraction,force_static_n,...\n0.0,563.6,...\n"}}}
+}
+
+
+@router.post("/hysteresis", response_model=HysteresisOut, responses=_CSV)
+async def hysteresis(
+    body: HysteresisIn,
+    format: Annotated[
+        Literal["json", "csv"] | None,
+        Query(description="csv: the arrays as a CSV table (or send Accept: text/csv)"),
+    ] = None,
+    accept: Annotated[str | None, Header(include_in_schema=False)] = None,
+) -> Response:
+    """Static force and both friction branches along the stroke (eqs 10, 29-31).
+
+    JSON by default; a CSV table of the arrays with ``?format=csv`` or ``Accept: text/csv``.
+    """
     with core_errors(HysteresisIn.model_fields):
         geo = body.geometry(need_length=True)
         assert geo.strand_length_m is not None
@@ -140,17 +156,20 @@ async def hysteresis(body: HysteresisIn) -> JSONResponse:
             s_scale=body.s_scale,
             points=body.points,
         )
-    return JSONResponse(
-        {
-            "s_scale": curves.s_scale,
-            "min_braid_angle_deg": _deg(curves.min_braid_angle_rad),
-            "max_braid_angle_deg": _deg(curves.max_braid_angle_rad),
-            "braid_angle_deg": np.degrees(curves.braid_angle_rad),
-            "length_m": curves.length_m,
-            "contraction": curves.contraction,
-            "force_static_n": curves.force_static_n,
-            "friction_force_n": curves.friction_force_n,
-            "force_contracting_n": curves.force_contracting_n,
-            "force_extending_n": curves.force_extending_n,
-        }
-    )
+    arrays = {
+        "braid_angle_deg": np.degrees(curves.braid_angle_rad),
+        "length_m": curves.length_m,
+        "contraction": curves.contraction,
+        "force_static_n": curves.force_static_n,
+        "friction_force_n": curves.friction_force_n,
+        "force_contracting_n": curves.force_contracting_n,
+        "force_extending_n": curves.force_extending_n,
+    }
+    if format == "csv" or (format is None and accept is not None and "text/csv" in accept):
+        return CSVResponse(csv_bytes(arrays))
+    scalars = {
+        "s_scale": curves.s_scale,
+        "min_braid_angle_deg": _deg(curves.min_braid_angle_rad),
+        "max_braid_angle_deg": _deg(curves.max_braid_angle_rad),
+    }
+    return JSONResponse({**scalars, **arrays})
