@@ -122,7 +122,7 @@ async def s_scale(body: SScaleIn) -> JSONResponse:
     )
 
 
-_CSV = {
+_CSV: dict[int | str, dict[str, Any]] = {
     200: {"content": {"text/csv": {"example": "contraction,force_static_n,...\n0.0,563.6,...\n"}}}
 }
 
