@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 import uvicorn
 
+from app.cli_report import add_report_parser
 from app.logs import log_config
 from app.settings import LOG_LEVELS, Settings
 
@@ -43,6 +44,7 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--root-path", default=env.root_path, help="proxy prefix (PMA_ROOT_PATH)")
     serve.add_argument("--reload", action="store_true", help="restart on code changes (dev)")
     serve.set_defaults(handler=_serve)
+    add_report_parser(commands)
     return parser
 
 

@@ -12,7 +12,7 @@ from app.docs import install_docs
 from app.errors import install_error_handlers
 from app.middleware import BodyLimitMiddleware, RequestContextMiddleware
 from app.responses import JSONResponse
-from app.routes import calculations, design, reference
+from app.routes import calculations, design, export, reference
 from app.settings import Settings
 from app.web import install_web
 
@@ -49,6 +49,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     install_error_handlers(app)
     app.include_router(calculations.router)
     app.include_router(design.router)
+    app.include_router(export.router)
     app.include_router(reference.router)
     install_docs(app)
     install_web(app, STATIC_DIR)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -336,3 +336,28 @@ class PressureSweepOut(BaseModel):
     min_strand_count: list[int] = Field(description="ceil(N) [-]")
     worst_case_min_strand_count_exact: list[float] = Field(description="N at 45° [-]")
     worst_case_min_strand_count: list[int] = Field(description="ceil(N) at 45° [-]")
+
+
+class OpenSimIn(WithGeometry):
+    """A braid to express as an OpenSim McKibbenActuator (b and n, or D_o with one of them)."""
+
+    model_config = _examples(
+        {"strand_length_m": 0.65, "turns": 4.7, "strand_diameter_m": 0.00025, "strand_count": 240}
+    )
+    strand_diameter_m: StrandDiameter
+    strand_count: StrandCount
+    name: Annotated[
+        str, Field(pattern=r"^[A-Za-z][A-Za-z0-9_]{0,63}$", description="Component name")
+    ] = "pma"
+    cord_length_m: float = Field(
+        default=0.0, ge=0.0, le=100.0, description="Length of the end cords, not braided [m]"
+    )
+
+
+class OpenSimOut(BaseModel):
+    thread_length: float = Field(description="OpenSim thread_length = b [m]")
+    number_of_turns: float = Field(description="OpenSim number_of_turns = n [-]")
+    cord_length: float = Field(description="OpenSim cord_length [m]")
+    max_length_m: float = Field(description="Braided length at θ_min, eq 9 [m]")
+    min_length_m: float = Field(description="Braided length at θ_max [m]")
+    xml: str = Field(description="The <McKibbenActuator> element for an .osim model")

@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import asdict
-
 import numpy as np
 from fastapi import APIRouter
 
 from app.errors import core_errors, field_error
+from app.report import design_json
 from app.responses import JSONResponse
 from app.schemas import (
     DesignIn,
@@ -18,85 +17,15 @@ from app.schemas import (
     StrandCountSweepOut,
 )
 from pma_core import braid, friction, gap, strength
-from pma_core.design import Design, DesignReport, design_report
 from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD
-from pma_core.materials import MATERIALS, Material
 
 router = APIRouter(prefix="/api/v1", tags=["design"], default_response_class=JSONResponse)
-
-_PROPERTIES = ("youngs_modulus_pa", "poisson_ratio", "tensile_strength_pa", "friction_coefficient")
-
-
-def _material(body: DesignIn) -> dict[str, float]:
-    preset: Material | None = None
-    if body.material is not None:
-        preset = MATERIALS.get(body.material)
-        if preset is None:
-            known = ", ".join(MATERIALS)
-            raise field_error("material", f"unknown material {body.material!r}; presets: {known}")
-    values: dict[str, float] = {}
-    for name in _PROPERTIES:
-        value = getattr(body, name)
-        if value is None and preset is None:
-            raise field_error(name, f"{name} is required when no material preset is given")
-        values[name] = value if value is not None else getattr(preset, name)
-    return values
 
 
 @router.post("/design", response_model=DesignOut)
 async def design(body: DesignIn) -> JSONResponse:
     """Every quantity of one actuator, with warnings (stable codes and sentences)."""
-    properties = _material(body)
-    with core_errors(DesignIn.model_fields):
-        geo = body.geometry()
-        report = design_report(
-            Design(
-                strand_diameter_m=body.strand_diameter_m,
-                strand_count=body.strand_count,
-                parallel_strands=body.parallel_strands,
-                theoretical_diameter_m=geo.theoretical_diameter_m,
-                pressure_pa=body.pressure_pa,
-                safety_factor=body.safety_factor,
-                strand_length_m=geo.strand_length_m,
-                s_scale=body.s_scale,
-                gap_area_limit_m2=body.gap_area_limit_m2,
-                **properties,
-            )
-        )
-    return JSONResponse(_report_json(report, geo.strand_length_m, geo.turns, properties))
-
-
-def _report_json(
-    r: DesignReport, b: float | None, n: float | None, properties: dict[str, float]
-) -> dict[str, object]:
-    return {
-        "theoretical_diameter_m": r.theoretical_diameter_m,
-        "strand_length_m": b,
-        "turns": n,
-        "min_braid_angle_deg": float(np.degrees(r.min_braid_angle_rad)),
-        "jamming_angle_deg": float(np.degrees(r.jamming_angle_rad)),
-        "max_braid_angle_deg": float(np.degrees(r.max_braid_angle_rad)),
-        "max_contraction": r.max_contraction,
-        "max_length_m": r.max_length_m,
-        "min_length_m": r.min_length_m,
-        "stroke_m": r.stroke_m,
-        "peak_static_force_n": r.peak_static_force_n,
-        "max_gap_width_m": r.max_gap_width_m,
-        "max_gap_area_m2": r.max_gap_area_m2,
-        "failure_strand_count": {
-            "braid_angle_deg": float(np.degrees(NEUTRAL_BRAID_ANGLE_RAD)),
-            "min_strand_count_exact": r.failure_strand_count_exact,
-            "min_strand_count": r.failure_strand_count,
-            "worst_case_braid_angle_deg": 45.0,
-            "worst_case_min_strand_count_exact": r.worst_case_failure_strand_count_exact,
-            "worst_case_min_strand_count": r.worst_case_failure_strand_count,
-        },
-        "worst_case_strand_stress_pa": r.worst_case_strand_stress_pa,
-        "s_scale": r.s_scale,
-        "s_scale_computed": r.s_scale_computed,
-        "material": properties,
-        "warnings": [asdict(w) for w in r.warnings],
-    }
+    return JSONResponse(design_json(body))
 
 
 @router.post("/sweeps/strand-count", response_model=StrandCountSweepOut)

@@ -1,0 +1,79 @@
+"""The hysteresis curves as CSV: ?format=csv or Accept: text/csv."""
+
+from __future__ import annotations
+
+import csv
+import io
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.main import app
+
+client = TestClient(app)
+BODY = {
+    "strand_length_m": 0.65,
+    "turns": 4.7,
+    "strand_diameter_m": 0.00025,
+    "strand_count": 240,
+    "pressure_pa": 200_000.0,
+    "friction_coefficient": 0.2,
+    "youngs_modulus_pa": 3e9,
+    "poisson_ratio": 0.4,
+    "points": 11,
+}
+COLUMNS = [
+    "braid_angle_deg",
+    "length_m",
+    "contraction",
+    "force_static_n",
+    "friction_force_n",
+    "force_contracting_n",
+    "force_extending_n",
+]
+
+
+def _table(text: str) -> list[dict[str, str]]:
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+@pytest.mark.parametrize(
+    ("path", "headers"),
+    [
+        ("/api/v1/hysteresis?format=csv", {}),
+        ("/api/v1/hysteresis", {"Accept": "text/csv"}),
+    ],
+)
+def test_csv_has_the_json_arrays(path: str, headers: dict[str, str]) -> None:
+    as_json = client.post("/api/v1/hysteresis", json=BODY).json()
+    response = client.post(path, json=BODY, headers=headers)
+    assert response.status_code == 200
+    assert response.headers["content-type"].startswith("text/csv")
+    rows = _table(response.text)
+    assert list(rows[0]) == COLUMNS
+    assert len(rows) == 11
+    for column in COLUMNS:
+        assert [float(row[column]) for row in rows] == as_json[column]
+
+
+def test_format_json_wins_over_accept() -> None:
+    response = client.post(
+        "/api/v1/hysteresis?format=json", json=BODY, headers={"Accept": "text/csv"}
+    )
+    assert response.headers["content-type"] == "application/json"
+
+
+def test_unknown_format_is_refused() -> None:
+    response = client.post("/api/v1/hysteresis?format=xlsx", json=BODY)
+    assert response.status_code == 422
+    assert response.json()["detail"][0]["loc"] == ["query", "format"]
+
+
+def test_large_csv_is_gzipped_when_accepted() -> None:
+    response = client.post(
+        "/api/v1/hysteresis?format=csv",
+        json={**BODY, "points": 100_000},
+        headers={"Accept-Encoding": "gzip"},
+    )
+    assert response.headers["content-encoding"] == "gzip"
+    assert len(_table(response.text)) == 100_000

@@ -1,0 +1,74 @@
+"""Request ids, JSON access logs and the body-size limit."""
+
+from __future__ import annotations
+
+import json
+import logging
+from collections.abc import Iterator
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.main import app
+from app.middleware import MAX_BODY_BYTES
+
+client = TestClient(app)
+BODY = {"strand_diameter_m": 0.00025, "strand_count": 240, "theoretical_diameter_m": 0.031}
+
+
+def test_every_response_has_a_request_id() -> None:
+    ids = {client.post("/api/v1/min-braid-angle", json=BODY).headers["x-request-id"] for _ in "ab"}
+    assert len(ids) == 2
+    assert all(len(i) == 32 for i in ids)
+    assert client.get("/nowhere").headers["x-request-id"]
+
+
+def test_a_valid_client_request_id_is_kept_and_a_bad_one_replaced() -> None:
+    kept = client.get("/healthz", headers={"X-Request-ID": "trace-42.a:b"})
+    assert kept.headers["x-request-id"] == "trace-42.a:b"
+    replaced = client.get("/healthz", headers={"X-Request-ID": "x" * 200})
+    assert len(replaced.headers["x-request-id"]) == 32
+
+
+def test_access_log_is_one_json_line_per_request(caplog: pytest.LogCaptureFixture) -> None:
+    with caplog.at_level(logging.INFO, logger="pma.access"):
+        response = client.post("/api/v1/min-braid-angle", json=BODY)
+    (record,) = [r for r in caplog.records if r.name == "pma.access"]
+    entry = record.msg
+    assert isinstance(entry, dict)
+    assert entry["path"] == "/api/v1/min-braid-angle"
+    assert entry["status"] == 200
+    assert entry["request_id"] == response.headers["x-request-id"]
+    assert entry["duration_ms"] >= 0
+    json.dumps(entry)
+
+
+def test_body_over_the_limit_is_refused_with_413() -> None:
+    response = client.post(
+        "/api/v1/min-braid-angle",
+        content=b" " * (MAX_BODY_BYTES + 1),
+        headers={"content-type": "application/json"},
+    )
+    assert response.status_code == 413
+    assert response.json() == {"detail": f"request body larger than {MAX_BODY_BYTES} bytes"}
+
+
+def test_chunked_body_over_the_limit_is_refused_with_413() -> None:
+    def chunks() -> Iterator[bytes]:
+        for _ in range(MAX_BODY_BYTES // 1024 + 2):
+            yield b" " * 1024
+
+    response = client.post(
+        "/api/v1/min-braid-angle",
+        content=chunks(),
+        headers={"content-type": "application/json"},
+    )
+    assert response.status_code == 413
+
+
+def test_body_under_the_limit_passes() -> None:
+    padded = json.dumps(BODY) + " " * (MAX_BODY_BYTES - 200)
+    response = client.post(
+        "/api/v1/min-braid-angle", content=padded, headers={"content-type": "application/json"}
+    )
+    assert response.status_code == 200
