@@ -62,13 +62,10 @@ async def _http_handler(request: Request, exc: Exception) -> Response:
     return JSONResponse({"detail": exc.detail}, status_code=exc.status_code, headers=headers)
 
 
-async def _unexpected_handler(request: Request, exc: Exception) -> Response:
-    # Never leak a stack trace or an internal path.
-    return JSONResponse({"detail": "internal error"}, status_code=500)
-
-
 def install_error_handlers(app: FastAPI) -> None:
-    """Register the 422, HTTP error and last-resort handlers on ``app``."""
+    """Register the 422 and HTTP error handlers on ``app``.
+
+    Unexpected exceptions are answered by :class:`app.middleware.InternalErrorMiddleware`.
+    """
     app.add_exception_handler(RequestValidationError, _validation_handler)
     app.add_exception_handler(StarletteHTTPException, _http_handler)
-    app.add_exception_handler(Exception, _unexpected_handler)

@@ -10,7 +10,11 @@ from starlette.middleware.gzip import GZipMiddleware
 
 from app.docs import install_docs
 from app.errors import install_error_handlers
-from app.middleware import BodyLimitMiddleware, RequestContextMiddleware
+from app.middleware import (
+    BodyLimitMiddleware,
+    InternalErrorMiddleware,
+    RequestContextMiddleware,
+)
 from app.responses import JSONResponse
 from app.routes import calculations, design, export, reference
 from app.settings import Settings
@@ -47,6 +51,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     install_error_handlers(app)
+    app.add_middleware(InternalErrorMiddleware)
     app.include_router(calculations.router)
     app.include_router(design.router)
     app.include_router(export.router)

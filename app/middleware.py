@@ -132,14 +132,51 @@ def _declared_length(scope: Scope) -> int:
 
 
 async def _refuse(send: Send) -> None:
+    await _send_json(send, 413, _TOO_LARGE)
+
+
+async def _send_json(send: Send, status: int, body: bytes) -> None:
     await send(
         {
             "type": "http.response.start",
-            "status": 413,
+            "status": status,
             "headers": [
                 (b"content-type", b"application/json"),
-                (b"content-length", str(len(_TOO_LARGE)).encode()),
+                (b"content-length", str(len(body)).encode()),
             ],
         }
     )
-    await send({"type": "http.response.body", "body": _TOO_LARGE})
+    await send({"type": "http.response.body", "body": body})
+
+
+_INTERNAL = json.dumps({"detail": "internal error"}).encode()
+error_log = logging.getLogger("pma.error")
+
+
+class InternalErrorMiddleware:
+    """Answer an unexpected exception with a bare 500: no stack trace, no internal path.
+
+    Installed innermost, so the 500 still passes the request-id and security-header
+    middleware on its way out. The exception goes to the ``pma.error`` log.
+    """
+
+    def __init__(self, app: ASGIApp) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        started = False
+
+        async def tracking_send(message: Message) -> None:
+            nonlocal started
+            started = started or message["type"] == "http.response.start"
+            await send(message)
+
+        try:
+            await self.app(scope, receive, tracking_send)
+        except Exception:
+            error_log.exception("unhandled error on %s %s", scope["method"], scope["path"])
+            if not started:
+                await _send_json(send, 500, _INTERNAL)
