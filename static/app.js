@@ -79,9 +79,8 @@ class ApiError extends Error {
 }
 
 async function api(path, body, signal) {
-  const init = body === undefined
-    ? { signal }
-    : { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body), signal };
+  const headers = { "Content-Type": "application/json" };
+  const init = body === undefined ? { signal } : { method: "POST", headers, body: JSON.stringify(body), signal };
   const response = await fetch(API + path, init);
   const data = await response.json().catch(() => null);
   if (!response.ok) throw new ApiError(response.status, data?.detail);
@@ -332,6 +331,8 @@ function setState(state, message) {
 
 // ---------------------------------------------------------------- plots
 
+const FONT = { family: "system-ui, -apple-system, 'Segoe UI', Roboto, sans-serif", size: 12, color: "#1b1f24" };
+
 const axis = (title, extra = {}) => ({ title: { text: title }, zeroline: false, automargin: true, ...extra });
 
 function layout(xTitle, yTitle, yOptions = {}) {
@@ -340,7 +341,7 @@ function layout(xTitle, yTitle, yOptions = {}) {
     yaxis: axis(yTitle, yOptions),
     margin: { l: 64, r: 16, t: 16, b: 56 },
     legend: { orientation: "h", y: -0.28, x: 0 },
-    font: { family: "system-ui, -apple-system, 'Segoe UI', Roboto, sans-serif", size: 12, color: "#1b1f24" },
+    font: FONT,
     paper_bgcolor: "#ffffff",
     plot_bgcolor: "#ffffff",
     hovermode: "closest",
@@ -349,111 +350,117 @@ function layout(xTitle, yTitle, yOptions = {}) {
 
 const line = (x, y, name, style = {}) => ({ type: "scatter", mode: "lines", x, y, name, ...style });
 const markers = (x, y, name, style = {}) => ({ type: "scatter", mode: "markers", x, y, name, ...style });
+const modelLine = (x, y, name) => line(x, y, name, { line: { color: COLORS.design, width: 2 } });
 const percent = (fractions) => fractions.map((c) => c * 100);
 const kpa = (pascals) => pascals.map((p) => p / 1e3);
 const squareMm = (squareMetres) => squareMetres.map((a) => a * 1e6);
+const kpaLabel = (pa) => `${fmt(pa / 1e3, 4)} kPa`;
 
 function designMarker(x, y) {
-  return markers([x], [y], "this design", { marker: { symbol: "star", size: 13, color: COLORS.marker, line: { color: "#1b1f24", width: 1 } } });
+  const marker = { symbol: "star", size: 13, color: COLORS.marker, line: { color: "#1b1f24", width: 1 } };
+  return markers([x], [y], "this design", { marker });
 }
 
+function measuredMarkers(x, y, name, extra = {}) {
+  return markers(x, y, name, { marker: { color: COLORS.measured, size: 9, symbol: "diamond" }, ...extra });
+}
+
+/** Static curve at the design pressure; both friction branches at every pressure. */
 function hysteresisTraces(outcomes, designPa) {
   const design = outcomes.hysteresis.data;
   const others = Object.keys(outcomes).filter((key) => key.startsWith("hysteresis@") && outcomes[key].ok);
   const curves = [
-    { pa: designPa, data: design, color: COLORS.design, width: 2.5, suffix: " (design)" },
-    ...others.map((key, i) => ({
-      pa: Number(key.split("@")[1]), data: outcomes[key].data, color: OTHER_COLORS[i % OTHER_COLORS.length], width: 1.5, suffix: "",
-    })),
+    { pa: designPa, data: design, color: COLORS.design, width: 2.5, title: `${kpaLabel(designPa)} (design)` },
+    ...others.map((key, i) => {
+      const pa = Number(key.split("@")[1]);
+      const color = OTHER_COLORS[i % OTHER_COLORS.length];
+      return { pa, data: outcomes[key].data, color, width: 1.5, title: kpaLabel(pa) };
+    }),
   ].sort((a, b) => a.pa - b.pa);
-  const static_ = line(percent(design.contraction), design.force_static_n, `static, ${fmt(designPa / 1e3, 4)} kPa`, {
-    line: { color: COLORS.static, dash: "dot", width: 2 },
-  });
-  return [static_, ...curves.flatMap(({ pa, data, color, width, suffix }) => {
-    const group = { legendgroup: String(pa), legendgrouptitle: { text: `${fmt(pa / 1e3, 4)} kPa${suffix}` } };
+  const staticStyle = { line: { color: COLORS.static, dash: "dot", width: 2 } };
+  const staticCurve = line(percent(design.contraction), design.force_static_n, `static, ${kpaLabel(designPa)}`, staticStyle);
+  return [staticCurve, ...curves.flatMap(({ pa, data, color, width, title }) => {
+    const group = { legendgroup: String(pa), legendgrouptitle: { text: title } };
     const x = percent(data.contraction);
     return [
-      line(x, data.force_contracting_n, `contracting, ${fmt(pa / 1e3, 4)} kPa`, { ...group, line: { color, width } }),
-      line(x, data.force_extending_n, `extending, ${fmt(pa / 1e3, 4)} kPa`, { ...group, line: { color, width, dash: "dash" } }),
+      line(x, data.force_contracting_n, `contracting, ${kpaLabel(pa)}`, { ...group, line: { color, width } }),
+      line(x, data.force_extending_n, `extending, ${kpaLabel(pa)}`, { ...group, line: { color, width, dash: "dash" } }),
     ];
   })];
 }
 
-function table1Traces() {
+function table1Markers() {
   const rows = reference.min_braid_angle_table1;
-  return [markers(rows.map((r) => r.strand_count), rows.map((r) => r.measured_deg), "paper Table 1, measured (±1 s.d.)", {
-    marker: { color: COLORS.measured, size: 8, symbol: "diamond" },
-    error_y: { type: "data", array: rows.map((r) => r.std_deg), visible: true, color: COLORS.measured },
-  })];
+  const errorBars = { type: "data", array: rows.map((r) => r.std_deg), visible: true, color: COLORS.measured };
+  const x = rows.map((r) => r.strand_count);
+  const y = rows.map((r) => r.measured_deg);
+  return measuredMarkers(x, y, "paper Table 1, measured (±1 s.d.)", { error_y: errorBars });
 }
 
-function fittedScaleTraces() {
+function fittedScaleMarkers() {
   const rows = reference.s_scale_fitted;
-  return [markers(rows.map((r) => r.pressure_pa / 1e3), rows.map((r) => r.s_scale), "fitted to experiments", {
-    marker: { color: COLORS.measured, size: 9, symbol: "diamond" },
+  return measuredMarkers(kpa(rows.map((r) => r.pressure_pa)), rows.map((r) => r.s_scale), "fitted to experiments", {
     text: rows.map((r) => r.source),
     hovertemplate: "%{x} kPa: %{y}<br>%{text}<extra></extra>",
-  })];
+  });
 }
 
-/** Each plot: the outcomes it needs and how to build its traces and layout from them. */
+function failureTraces(sweep, strandCount, angles) {
+  const p = kpa(sweep.pressure_pa);
+  const worstStyle = { line: { color: COLORS.measured, width: 2, dash: "dash" } };
+  const designStyle = { line: { color: COLORS.marker, width: 2 } };
+  return [
+    modelLine(p, sweep.min_strand_count_exact, `full contraction, ${deg(angles.braid_angle_deg)}`),
+    line(p, sweep.worst_case_min_strand_count_exact, `worst case, ${deg(angles.worst_case_braid_angle_deg)}`, worstStyle),
+    line([p[0], p[p.length - 1]], [strandCount, strandCount], `this design, N = ${strandCount}`, designStyle),
+  ];
+}
+
+/**
+ * Each plot: the requests it needs, and its traces and layout from their outcomes (o), the
+ * design's SI values (v) and the design report (d).
+ */
 const PLOTS = [
   {
     id: "plot-hysteresis",
     needs: ["hysteresis"],
-    figure: (o, v) => ({ traces: hysteresisTraces(o, v.pressure_pa), layout: layout("Contraction (%)", "Force (N)") }),
+    traces: (o, v) => hysteresisTraces(o, v.pressure_pa),
+    layout: () => layout("Contraction (%)", "Force (N)"),
   },
   {
     id: "plot-theta",
     needs: ["strandSweep"],
-    figure: (o, v, d) => ({
-      traces: [
-        line(o.strandSweep.data.strand_count, o.strandSweep.data.min_braid_angle_deg, "model, eq 8", { line: { color: COLORS.design, width: 2 } }),
-        ...table1Traces(),
-        designMarker(v.strand_count, d.min_braid_angle_deg),
-      ],
-      layout: layout("Strand count N", "Minimum braid angle θ<sub>min</sub> (°)"),
-    }),
+    traces: (o, v, d) => [
+      modelLine(o.strandSweep.data.strand_count, o.strandSweep.data.min_braid_angle_deg, "model, eq 8"),
+      table1Markers(),
+      designMarker(v.strand_count, d.min_braid_angle_deg),
+    ],
+    layout: () => layout("Strand count N", "Minimum braid angle θ<sub>min</sub> (°)"),
   },
   {
     id: "plot-gap",
     needs: ["strandSweep"],
-    figure: (o, v, d) => ({
-      traces: [
-        line(o.strandSweep.data.strand_count, squareMm(o.strandSweep.data.max_gap_area_m2), "model, eq 15", { line: { color: COLORS.design, width: 2 } }),
-        designMarker(v.strand_count, d.max_gap_area_m2 * 1e6),
-      ],
-      layout: layout("Strand count N", "Maximum gap area (mm², log scale)", { type: "log", exponentformat: "power" }),
-    }),
+    traces: (o, v, d) => [
+      modelLine(o.strandSweep.data.strand_count, squareMm(o.strandSweep.data.max_gap_area_m2), "model, eq 15"),
+      designMarker(v.strand_count, d.max_gap_area_m2 * 1e6),
+    ],
+    layout: () => layout("Strand count N", "Maximum gap area (mm², log scale)", { type: "log", exponentformat: "power" }),
   },
   {
     id: "plot-sscale",
     needs: ["pressureSweep"],
-    figure: (o, v, d) => ({
-      traces: [
-        line(kpa(o.pressureSweep.data.pressure_pa), o.pressureSweep.data.s_scale, "Hertz contact, eq 34", { line: { color: COLORS.design, width: 2 } }),
-        ...fittedScaleTraces(),
-        designMarker(v.pressure_pa / 1e3, d.s_scale),
-      ],
-      layout: layout("Pressure (kPa)", "S<sub>scale</sub>"),
-    }),
+    traces: (o, v, d) => [
+      modelLine(kpa(o.pressureSweep.data.pressure_pa), o.pressureSweep.data.s_scale, "Hertz contact, eq 34"),
+      fittedScaleMarkers(),
+      designMarker(v.pressure_pa / 1e3, d.s_scale),
+    ],
+    layout: () => layout("Pressure (kPa)", "S<sub>scale</sub>"),
   },
   {
     id: "plot-failure",
     needs: ["pressureSweep"],
-    figure: (o, v, d) => {
-      const sweep = o.pressureSweep.data;
-      const p = kpa(sweep.pressure_pa);
-      const angles = d.failure_strand_count;
-      return {
-        traces: [
-          line(p, sweep.min_strand_count_exact, `full contraction, ${deg(angles.braid_angle_deg)}`, { line: { color: COLORS.design, width: 2 } }),
-          line(p, sweep.worst_case_min_strand_count_exact, `worst case, ${deg(angles.worst_case_braid_angle_deg)}`, { line: { color: COLORS.measured, width: 2, dash: "dash" } }),
-          line([p[0], p[p.length - 1]], [v.strand_count, v.strand_count], `this design, N = ${v.strand_count}`, { line: { color: COLORS.marker, width: 2 } }),
-        ],
-        layout: layout("Pressure (kPa)", "Strands needed to avoid failure"),
-      };
-    },
+    traces: (o, v, d) => failureTraces(o.pressureSweep.data, v.strand_count, d.failure_strand_count),
+    layout: () => layout("Pressure (kPa)", "Strands needed to avoid failure"),
   },
 ];
 
@@ -469,8 +476,8 @@ async function drawPlots(outcomes, values, design, errorsByRequest) {
     const failed = plot.needs.filter((key) => !outcomes[key].ok);
     plotNote(plot.id, failed.flatMap((key) => errorsByRequest[key]));
     if (failed.length) return Promise.resolve();
-    const { traces, layout: plotLayout } = plot.figure(outcomes, values, design);
-    return Plotly.react(plot.id, traces, plotLayout, PLOT_CONFIG(plot.id.replace("plot-", "pma-")));
+    const config = PLOT_CONFIG(plot.id.replace("plot-", "pma-"));
+    return Plotly.react(plot.id, plot.traces(outcomes, values, design), plot.layout(), config);
   });
   await Promise.all(draws);
 }
@@ -547,7 +554,8 @@ async function recompute() {
 
 function resultSummary(d) {
   const warnings = d.warnings.length ? `${d.warnings.length} warning(s).` : "No warnings.";
-  return `Up to date: θ_min ${deg(d.min_braid_angle_deg)}, maximum contraction ${(d.max_contraction * 100).toFixed(1)} %. ${warnings}`;
+  const contraction = `${(d.max_contraction * 100).toFixed(1)} %`;
+  return `Up to date: θ_min ${deg(d.min_braid_angle_deg)}, maximum contraction ${contraction}. ${warnings}`;
 }
 
 function recordTiming(started) {
