@@ -42,11 +42,35 @@ def core_errors(fields: Container[str]) -> Iterator[None]:
         raise RequestValidationError(detail) from None
 
 
+_BOUNDS = {
+    "greater_than_equal": ("ge", "at least"),
+    "greater_than": ("gt", "greater than"),
+    "less_than_equal": ("le", "at most"),
+    "less_than": ("lt", "less than"),
+}
+_UNITS = (("_m2", " m²"), ("_m", " m"), ("_pa", " Pa"), ("_deg", "°"), ("_n", " N"))
+
+
 def _clean(error: dict[str, Any]) -> dict[str, Any]:
     # Only loc, msg and type: "input" may hold NaN (not JSON) or a large body, and "ctx"
     # may hold exception objects.
-    msg = str(error.get("msg", "invalid value")).removeprefix("Value error, ")
-    return {"loc": list(error.get("loc", ())), "msg": msg, "type": error.get("type", "value_error")}
+    loc = list(error.get("loc", ()))
+    kind = str(error.get("type", "value_error"))
+    msg = _bound_message(loc, kind, error) or str(error.get("msg", "invalid value"))
+    return {"loc": loc, "msg": msg.removeprefix("Value error, "), "type": kind}
+
+
+def _bound_message(loc: list[Any], kind: str, error: dict[str, Any]) -> str | None:
+    """ "strand_diameter_m must be at least 1e-06 m, got 0" rather than pydantic's wording."""
+    if kind not in _BOUNDS or not loc or not isinstance(loc[-1], str):
+        return None
+    key, words = _BOUNDS[kind]
+    limit, value = error.get("ctx", {}).get(key), error.get("input")
+    if not isinstance(limit, int | float) or not isinstance(value, int | float):
+        return None
+    field = loc[-1]
+    unit = next((u for suffix, u in _UNITS if field.endswith(suffix)), "")
+    return f"{field} must be {words} {limit:g}{unit}, got {value:g}{unit}"
 
 
 async def _validation_handler(request: Request, exc: Exception) -> Response:
