@@ -8,12 +8,13 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 import orjson
+from starlette.responses import JSONResponse as StarletteJSONResponse
 from starlette.responses import Response
 
 _OPTIONS = orjson.OPT_SERIALIZE_NUMPY | orjson.OPT_NON_STR_KEYS
 
 
-class JSONResponse(Response):
+class JSONResponse(StarletteJSONResponse):
     """``application/json`` rendered by orjson.
 
     numpy arrays are written straight from their buffers. orjson writes NaN and infinities

@@ -361,3 +361,42 @@ class OpenSimOut(BaseModel):
     max_length_m: float = Field(description="Braided length at θ_min, eq 9 [m]")
     min_length_m: float = Field(description="Braided length at θ_max [m]")
     xml: str = Field(description="The <McKibbenActuator> element for an .osim model")
+
+
+class HealthOut(BaseModel):
+    status: str = Field(description='"ok" while the service answers')
+
+
+class MaterialOut(BaseModel):
+    id: str = Field(description="Preset id, for the material field of /design")
+    name: str
+    youngs_modulus_pa: float = Field(description="E [Pa]")
+    poisson_ratio: float = Field(description="ν [-]")
+    tensile_strength_pa: float = Field(description="σ_u [Pa]")
+    friction_coefficient: float = Field(description="f_s [-]")
+    basis: str = Field(description="Bulk-polymer or fibre values")
+    sources: dict[str, str] = Field(description="The source of each number, by field")
+
+
+class MaterialsOut(BaseModel):
+    materials: list[MaterialOut]
+
+
+class Table1Row(BaseModel):
+    strand_count: int = Field(description="N [-]")
+    measured_deg: float = Field(description="θ_min measured, mean of ten [deg]")
+    std_deg: float = Field(description="Standard deviation of the measurement [deg]")
+    calculated_deg: float = Field(description="θ_min of eq 8 as the paper prints it [deg]")
+
+
+class SScaleFitOut(BaseModel):
+    pressure_pa: float = Field(description="P [Pa]")
+    s_scale: float = Field(description="S_scale fitted to measured hysteresis [-]")
+    source: str
+
+
+class ReferenceOut(BaseModel):
+    braid_sample: dict[str, float] = Field(description="The braid of the paper's §2.1")
+    test_muscle: dict[str, float] = Field(description="The hysteresis test muscle of §3.3")
+    min_braid_angle_table1: list[Table1Row]
+    s_scale_fitted: list[SScaleFitOut]
