@@ -207,6 +207,7 @@ class PMAClient(_Base):
     design = _sync(endpoints.design)
     strand_count_sweep = _sync(endpoints.strand_count_sweep)
     pressure_sweep = _sync(endpoints.pressure_sweep)
+    opensim_export = _sync(endpoints.opensim_export)
     materials = _sync(endpoints.materials)
     reference = _sync(endpoints.reference)
 
@@ -280,5 +281,6 @@ class AsyncPMAClient(_Base):
     design = _async(endpoints.design)
     strand_count_sweep = _async(endpoints.strand_count_sweep)
     pressure_sweep = _async(endpoints.pressure_sweep)
+    opensim_export = _async(endpoints.opensim_export)
     materials = _async(endpoints.materials)
     reference = _async(endpoints.reference)

@@ -24,6 +24,7 @@ from pma_client._models import (
     Hysteresis,
     Material,
     MinBraidAngle,
+    OpenSimActuator,
     PressureSweep,
     Reference,
     SScale,
@@ -430,6 +431,47 @@ def pressure_sweep(
         Any other error status, or an unexpected response.
     """
     return _post("/api/v1/sweeps/pressure", PressureSweep.from_json, locals())
+
+
+def opensim_export(
+    *,
+    strand_diameter_m: float,
+    strand_count: int,
+    strand_length_m: float | None = None,
+    turns: float | None = None,
+    theoretical_diameter_m: float | None = None,
+    name: str | None = None,
+    cord_length_m: float | None = None,
+) -> Call[OpenSimActuator]:
+    """The braid as an OpenSim ``McKibbenActuator`` (thread_length = b, number_of_turns = n).
+
+    ``POST /api/v1/export/opensim``. Give b with n or with D_o.
+
+    Parameters
+    ----------
+    strand_diameter_m : float
+        D_s [m].
+    strand_count : int
+        N [-].
+    strand_length_m, turns, theoretical_diameter_m : float, optional
+        b [m], n [-], D_o [m]: two of them, b among them.
+    name : str, optional
+        Component name in the XML (default "pma").
+    cord_length_m : float, optional
+        Length of the unbraided end cords [m] (default 0).
+
+    Returns
+    -------
+    OpenSimActuator
+
+    Raises
+    ------
+    PMAValidationError
+        The input was refused.
+    PMAError
+        Any other error status, or an unexpected response.
+    """
+    return _post("/api/v1/export/opensim", OpenSimActuator.from_json, locals())
 
 
 def materials() -> Call[tuple[Material, ...]]:

@@ -212,6 +212,44 @@ class FailureStrandCount:
 
 
 @dataclass(frozen=True)
+class OpenSimActuator:
+    """``POST /api/v1/export/opensim``: the braid as an OpenSim ``McKibbenActuator``.
+
+    Attributes
+    ----------
+    thread_length : float
+        OpenSim thread_length = b [m].
+    number_of_turns : float
+        OpenSim number_of_turns = n [-].
+    cord_length : float
+        OpenSim cord_length [m].
+    max_length_m, min_length_m : float
+        Braided length at θ_min (eq 9) and at θ_max [m].
+    xml : str
+        The ``<McKibbenActuator>`` element for an .osim model.
+    """
+
+    thread_length: float
+    number_of_turns: float
+    cord_length: float
+    max_length_m: float
+    min_length_m: float
+    xml: str
+
+    @classmethod
+    def from_json(cls, data: Json) -> Self:
+        """Build from the response's JSON object."""
+        return cls(
+            thread_length=_number(data, "thread_length"),
+            number_of_turns=_number(data, "number_of_turns"),
+            cord_length=_number(data, "cord_length"),
+            max_length_m=_number(data, "max_length_m"),
+            min_length_m=_number(data, "min_length_m"),
+            xml=_text(data, "xml"),
+        )
+
+
+@dataclass(frozen=True)
 class SScale:
     """``POST /api/v1/s-scale``: the contact-area scale factor (eqs 32-34).
 

@@ -25,6 +25,7 @@ from pma_client import (
     GapArea,
     Hysteresis,
     MinBraidAngle,
+    OpenSimActuator,
     PMAClient,
     PMAError,
     PMAValidationError,
@@ -64,6 +65,7 @@ POST_ENDPOINTS: dict[str, tuple[str, type, str]] = {
     "design": ("/api/v1/design", DesignReport, "DesignOut"),
     "strand_count_sweep": ("/api/v1/sweeps/strand-count", StrandCountSweep, "StrandCountSweepOut"),
     "pressure_sweep": ("/api/v1/sweeps/pressure", PressureSweep, "PressureSweepOut"),
+    "opensim_export": ("/api/v1/export/opensim", OpenSimActuator, "OpenSimOut"),
 }
 
 
@@ -328,6 +330,15 @@ def test_materials(pma: PMAClient, paper: DavisCaldwell2006) -> None:
         nylon.sources["youngs_modulus_pa"] = "changed"  # type: ignore[index]
 
 
+def test_opensim_export(pma: PMAClient) -> None:
+    actuator = pma.opensim_export(
+        strand_length_m=0.65, turns=4.7, strand_diameter_m=0.25e-3, strand_count=240
+    )
+    assert (actuator.thread_length, actuator.number_of_turns) == (0.65, 4.7)
+    assert "<number_of_turns>4.7</number_of_turns>" in actuator.xml
+    assert actuator.min_length_m == pytest.approx(0.65 / 3**0.5)
+
+
 def test_reference(pma: PMAClient, paper: DavisCaldwell2006) -> None:
     reference = pma.reference()
     assert reference.braid_sample.theoretical_diameter_m == paper.theoretical_diameter_m
@@ -453,10 +464,10 @@ def test_method_parameters_are_the_body_fields(
 
 @pytest.mark.parametrize("name", POST_ENDPOINTS)
 def test_result_fields_are_the_response_fields(openapi: dict[str, Any], name: str) -> None:
-    # By the model's name: the service documents its 200 responses as strings (its
-    # JSONResponse is not a subclass of FastAPI's, so FastAPI does not link the model).
-    _, result_type, model = POST_ENDPOINTS[name]
-    schema = openapi["components"]["schemas"][model]
+    path, result_type, model = POST_ENDPOINTS[name]
+    content = openapi["paths"][path]["post"]["responses"]["200"]["content"]
+    schema = _schema(openapi, content["application/json"]["schema"])
+    assert schema == openapi["components"]["schemas"][model]
     assert {f.name for f in dataclasses.fields(result_type)} == set(schema["properties"])
 
 
