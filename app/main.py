@@ -45,7 +45,6 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="1.0.0",
         summary="Braid limits, strength, friction and hysteresis of pneumatic muscles",
         description=DESCRIPTION,
-        root_path=settings.root_path,
         default_response_class=JSONResponse,
         docs_url=None,
         redoc_url=None,

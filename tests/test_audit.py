@@ -1,4 +1,7 @@
-"""Dependencies carry no known advisory (pip-audit); skipped when its database is unreachable."""
+"""The pinned dependencies (constraints.txt) carry no known advisory, by pip-audit.
+
+Skipped, saying so, when pip-audit's vulnerability database cannot be reached.
+"""
 
 from __future__ import annotations
 
@@ -10,13 +13,18 @@ from pathlib import Path
 import pytest
 
 AUDIT = Path(sys.executable).with_name("pip-audit")
+CONSTRAINTS = Path(__file__).resolve().parent.parent / "constraints.txt"
 
 
 def test_installed_dependencies_have_no_known_vulnerability() -> None:
     if not AUDIT.exists():
         pytest.skip("pip-audit not installed: dependency audit skipped")
     result = subprocess.run(
-        [str(AUDIT), "--format", "json", "--progress-spinner", "off", "--skip-editable"],
+        [
+            str(AUDIT),
+            *("--requirement", str(CONSTRAINTS), "--no-deps", "--disable-pip"),
+            *("--format", "json", "--progress-spinner", "off"),
+        ],
         capture_output=True,
         text=True,
         timeout=300,
