@@ -16,6 +16,7 @@ from app.responses import JSONResponse
 
 # pma_core names parameters in radians where the API takes degrees.
 _CORE_TO_FIELD = {"braid_angle_rad": "braid_angle_deg"}
+_UNPARSABLE_BODY = "There was an error parsing the body"
 _LEADING_NAME = re.compile(r"^([a-z_][a-z0-9_]*)\b")
 
 
@@ -81,6 +82,10 @@ async def _validation_handler(request: Request, exc: Exception) -> Response:
 async def _http_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, StarletteHTTPException)
     headers = getattr(exc, "headers", None)
+    if exc.status_code == 400 and exc.detail == _UNPARSABLE_BODY:
+        # FastAPI's 400 for a body it cannot decode (not UTF-8): bad input like any other.
+        detail = [{"loc": ["body"], "msg": "the body is not UTF-8 JSON", "type": "json_invalid"}]
+        return JSONResponse({"detail": detail}, status_code=422, headers=headers)
     if exc.status_code in (204, 304) or exc.status_code < 200:
         return Response(status_code=exc.status_code, headers=headers)
     return JSONResponse({"detail": exc.detail}, status_code=exc.status_code, headers=headers)

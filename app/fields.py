@@ -6,6 +6,11 @@ from typing import Annotated
 
 from pydantic import Field
 
+#: Bounds of the braid's size, given or worked out from eq 1 [m, m, -].
+THEORETICAL_DIAMETER_RANGE_M = (1e-4, 1.0)
+STRAND_LENGTH_RANGE_M = (1e-3, 100.0)
+TURNS_RANGE = (0.01, 10_000.0)
+
 StrandDiameter = Annotated[
     float,
     Field(
@@ -36,8 +41,8 @@ ParallelStrands = Annotated[
 TheoreticalDiameter = Annotated[
     float | None,
     Field(
-        ge=1e-4,
-        le=1.0,
+        ge=THEORETICAL_DIAMETER_RANGE_M[0],
+        le=THEORETICAL_DIAMETER_RANGE_M[1],
         description="D_o, braid diameter at a 90° braid angle [m], eq 1: b/(n·π)."
         " Give it, or strand_length_m with turns.",
         examples=[0.031],
@@ -46,8 +51,8 @@ TheoreticalDiameter = Annotated[
 StrandLength = Annotated[
     float | None,
     Field(
-        ge=1e-3,
-        le=100.0,
+        ge=STRAND_LENGTH_RANGE_M[0],
+        le=STRAND_LENGTH_RANGE_M[1],
         description="b, length of one braid strand [m]. With turns, gives D_o = b/(n·π).",
         examples=[0.65],
     ),
@@ -55,8 +60,8 @@ StrandLength = Annotated[
 Turns = Annotated[
     float | None,
     Field(
-        ge=0.01,
-        le=10_000.0,
+        ge=TURNS_RANGE[0],
+        le=TURNS_RANGE[1],
         description="n, turns one strand makes around the actuator [-].",
         examples=[4.7],
     ),

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from app.errors import field_error
+from app.fields import STRAND_LENGTH_RANGE_M, THEORETICAL_DIAMETER_RANGE_M, TURNS_RANGE
 from pma_core import geometry
 
 
@@ -59,9 +60,29 @@ def _complete(d_o: float | None, b: float | None, n: float | None) -> Geometry:
     if d_o is None:
         assert b is not None
         assert n is not None
-        d_o = float(geometry.theoretical_diameter(b, n))
+        d_o = _derived("theoretical_diameter_m", geometry.theoretical_diameter(b, n), "turns")
     elif b is not None:
-        n = float(geometry.turns(b, d_o))
+        n = _derived("turns", geometry.turns(b, d_o), "strand_length_m")
     elif n is not None:
-        b = float(geometry.strand_length(n, d_o))
+        b = _derived("strand_length_m", geometry.strand_length(n, d_o), "turns")
     return Geometry(d_o, b, n)
+
+
+_RANGES = {
+    "theoretical_diameter_m": (*THEORETICAL_DIAMETER_RANGE_M, " m"),
+    "strand_length_m": (*STRAND_LENGTH_RANGE_M, " m"),
+    "turns": (*TURNS_RANGE, ""),
+}
+
+
+def _derived(name: str, value: float, blamed: str) -> float:
+    """A quantity worked out from eq 1, held to the bounds it has when given directly."""
+    result = float(value)
+    low, high, unit = _RANGES[name]
+    if not low <= result <= high:
+        raise field_error(
+            blamed,
+            f"the braid's size gives {name} = {result:.4g}{unit} by eq 1 (D_o = b/(n·π)),"
+            f" outside the {low:g}{unit} to {high:g}{unit} the calculator accepts",
+        )
+    return result

@@ -18,7 +18,7 @@ from app.middleware import (
 from app.responses import JSONResponse
 from app.routes import calculations, design, export, reference
 from app.settings import Settings
-from app.web import install_web
+from app.web import SecurityHeadersMiddleware, install_web
 
 _PACKAGED_STATIC = Path(__file__).parent / "static"
 #: The page's files: packaged in the wheel as app/static, the repo's static/ in development.
@@ -50,15 +50,21 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     install_error_handlers(app)
-    app.add_middleware(InternalErrorMiddleware)
     app.include_router(calculations.router)
     app.include_router(design.router)
     app.include_router(export.router)
     app.include_router(reference.router)
     install_docs(app)
     install_web(app, STATIC_DIR)
+    _add_middleware(app, settings)
+    return app
+
+
+def _add_middleware(app: FastAPI, settings: Settings) -> None:
+    # Listed innermost first (each add_middleware wraps the ones before it), so every
+    # response, a 413 or a 500 included, gets the security headers and a request id.
+    app.add_middleware(InternalErrorMiddleware)
     app.add_middleware(GZipMiddleware, minimum_size=1024)
-    app.add_middleware(BodyLimitMiddleware)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,
@@ -66,8 +72,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             allow_methods=["GET", "POST"],
             allow_headers=["Content-Type", "Accept"],
         )
+    app.add_middleware(BodyLimitMiddleware)
+    app.add_middleware(SecurityHeadersMiddleware)
     app.add_middleware(RequestContextMiddleware)
-    return app
 
 
 app = create_app()

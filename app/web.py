@@ -119,7 +119,7 @@ def _plotly_response(request: Request) -> Response:
 
 
 def install_web(app: FastAPI, static_dir: Path) -> None:
-    """Serve the calculator page from ``static_dir`` and add the security headers to ``app``.
+    """Serve the calculator page from ``static_dir`` (add :class:`SecurityHeadersMiddleware` too).
 
     ``index.html`` is read once, here: restart the server after editing it.
     """
@@ -134,4 +134,3 @@ def install_web(app: FastAPI, static_dir: Path) -> None:
         "/" + plotly_url_path(), _plotly_response, methods=["GET"], include_in_schema=False
     )
     app.mount("/static", _RevalidatedStaticFiles(directory=static_dir), name="static")
-    app.add_middleware(SecurityHeadersMiddleware)

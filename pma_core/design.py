@@ -193,7 +193,7 @@ def _strength_warning(r: DesignReport, d: Design) -> DesignWarning | None:
             "below_worst_case_failure_count",
             f"{d.strand_count} strands are fewer than the {r.worst_case_failure_strand_count}"
             f" needed at the 45° worst case (eq 20): passing 45° on its stroke the strand stress"
-            f" reaches {stress_mpa:.0f} MPa, above the allowed {allowed_mpa:.0f} MPa.",
+            f" reaches {stress_mpa:.1f} MPa, above the allowed {allowed_mpa:.1f} MPa.",
         )
     return None
 

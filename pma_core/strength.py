@@ -23,8 +23,8 @@ from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD, braid_angle
 #: there, and every actuator passes through it on its stroke.
 WORST_CASE_BRAID_ANGLE_RAD: float = float(np.pi / 4)
 
-# Relative slack before rounding a strand count up, so that 97.0000000001 (float noise on
-# an exact 97) does not become 98.
+# Slack before rounding a strand count up, so that 97.0000000001 (float noise on an exact
+# 97) does not become 98: relative, but at most 1e-6 so that 1e15 stays 1e15.
 _CEIL_SLACK = 1e-9
 
 
@@ -208,4 +208,4 @@ def min_strand_count(exact_strand_count: npt.ArrayLike) -> Floats:
     array([ 97., 103.,  97.])
     """
     exact = check.as_floats("exact_strand_count", exact_strand_count)
-    return check.scalar_or_array(np.ceil(exact * (1.0 - _CEIL_SLACK)))
+    return check.scalar_or_array(np.ceil(exact - np.minimum(exact * _CEIL_SLACK, 1e-6)))

@@ -42,8 +42,10 @@ async def strand_count_sweep(body: StrandCountSweepIn) -> JSONResponse:
         d_o = body.geometry().theoretical_diameter_m
         limit = int(braid.max_strand_count(body.strand_diameter_m, d_o))
     if body.strand_count_min > limit:
-        with core_errors(fields):
+        try:
             braid.strand_fill_ratio(body.strand_diameter_m, body.strand_count_min, d_o)
+        except ValueError as error:
+            raise field_error("strand_count_min", str(error)) from None
     counts = np.arange(body.strand_count_min, min(body.strand_count_max, limit) + 1)
     args = (body.strand_diameter_m, counts, d_o)
     return JSONResponse(

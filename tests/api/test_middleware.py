@@ -51,6 +51,8 @@ def test_body_over_the_limit_is_refused_with_413() -> None:
     )
     assert response.status_code == 413
     assert response.json() == {"detail": f"request body larger than {MAX_BODY_BYTES} bytes"}
+    assert response.headers["x-content-type-options"] == "nosniff"
+    assert response.headers["x-request-id"]
 
 
 def test_chunked_body_over_the_limit_is_refused_with_413() -> None:

@@ -48,3 +48,4 @@ def test_unexpected_errors_reveal_nothing() -> None:
     assert response.json() == {"detail": "internal error"}
     assert "secret" not in response.text
     assert response.headers["x-request-id"]
+    assert response.headers["content-security-policy"].startswith("default-src 'self'")
