@@ -6,14 +6,7 @@ Playwright's own browser downloads are not used: the tests drive ``/usr/bin/chro
 
 from __future__ import annotations
 
-import json
 import os
-import socket
-import subprocess
-import sys
-import time
-import urllib.error
-import urllib.request
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -44,8 +37,6 @@ CHROMIUM_ARGS = [
     "--no-first-run",
     "--disable-quic",
 ]
-SERVER_HOST = "127.0.0.1"
-STARTUP_TIMEOUT_S = 30.0
 VIEWPORT: ViewportSize = {"width": 1400, "height": 1300}
 
 # Records every CSP violation the page reports, before any page script runs.
@@ -55,27 +46,6 @@ document.addEventListener("securitypolicyviolation", (event) => {
   window.__cspViolations.push(`${event.violatedDirective} blocked ${event.blockedURI}`);
 });
 """
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind((SERVER_HOST, 0))
-        port: int = sock.getsockname()[1]
-        return port
-
-
-def _wait_until_healthy(url: str, server: subprocess.Popen[bytes]) -> None:
-    deadline = time.monotonic() + STARTUP_TIMEOUT_S
-    while time.monotonic() < deadline:
-        if server.poll() is not None:
-            pytest.fail(f"uvicorn exited with code {server.returncode} before answering /healthz")
-        try:
-            with urllib.request.urlopen(f"{url}/healthz", timeout=2) as response:
-                if json.load(response) == {"status": "ok"}:
-                    return
-        except (urllib.error.URLError, ConnectionError):
-            time.sleep(0.1)
-    pytest.fail(f"uvicorn did not answer {url}/healthz within {STARTUP_TIMEOUT_S} s")
 
 
 def _require_chromium() -> None:
@@ -88,29 +58,20 @@ def _require_chromium() -> None:
 
 
 @pytest.fixture(scope="session")
-def base_url() -> Iterator[str]:
-    """URL of a real ``uvicorn app.main:app`` on a free loopback port, for the session."""
+def base_url(request: pytest.FixtureRequest) -> str:
+    """URL of the session's real uvicorn (``tests/conftest.py``), once Chromium is there."""
     _require_chromium()
-    port = _free_port()
-    command = [sys.executable, "-m", "uvicorn", "app.main:app"]
-    command += ["--host", SERVER_HOST, "--port", str(port), "--log-level", "warning"]
-    server = subprocess.Popen(command, cwd=REPO_ROOT)
-    url = f"http://{SERVER_HOST}:{port}"
-    try:
-        _wait_until_healthy(url, server)
-        yield url
-    finally:
-        server.terminate()
-        try:
-            server.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            server.kill()
-            server.wait()
+    url: str = request.getfixturevalue("live_server")
+    return url
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")
 def browser() -> Iterator[Browser]:
-    """Headless Debian Chromium, shared by the session."""
+    """Headless Debian Chromium, shared by the browser tests.
+
+    Package scope: Playwright's sync API holds an event loop on the main thread while it
+    runs, so it must stop before tests that start their own (the async client's).
+    """
     _require_chromium()
     with sync_playwright() as playwright:
         chromium = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
