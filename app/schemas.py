@@ -218,10 +218,18 @@ class DesignIn(WithGeometry):
         " override its values.",
         examples=["nylon"],
     )
-    youngs_modulus_pa: YoungsModulus | None = None
-    poisson_ratio: PoissonRatio | None = None
-    tensile_strength_pa: TensileStrength | None = None
-    friction_coefficient: FrictionCoefficient | None = None
+    youngs_modulus_pa: YoungsModulus | None = Field(
+        default=None, description="E [Pa] (eq 33); default: the preset's"
+    )
+    poisson_ratio: PoissonRatio | None = Field(
+        default=None, description="ν [-] (eq 33); default: the preset's"
+    )
+    tensile_strength_pa: TensileStrength | None = Field(
+        default=None, description="σ_u [Pa] (eq 20); default: the preset's"
+    )
+    friction_coefficient: FrictionCoefficient | None = Field(
+        default=None, description="f_s [-] (eq 30); default: the preset's"
+    )
     safety_factor: SafetyFactor = 1.0
     s_scale: MeasuredSScale = None
     gap_area_limit_m2: float = Field(
@@ -244,10 +252,10 @@ class FailureCountOut(BaseModel):
 
 
 class MaterialUsed(BaseModel):
-    youngs_modulus_pa: float
-    poisson_ratio: float
-    tensile_strength_pa: float
-    friction_coefficient: float
+    youngs_modulus_pa: float = Field(description="E [Pa]")
+    poisson_ratio: float = Field(description="ν [-]")
+    tensile_strength_pa: float = Field(description="σ_u [Pa]")
+    friction_coefficient: float = Field(description="f_s [-]")
 
 
 class WarningOut(BaseModel):
@@ -272,12 +280,12 @@ class DesignOut(BaseModel):
     peak_static_force_n: float = Field(description="F_static at θ_min, eq 10 [N]")
     max_gap_width_m: float = Field(description="Z at 45°, eq 14 [m]")
     max_gap_area_m2: float = Field(description="eq 15 [m²]")
-    failure_strand_count: FailureCountOut
+    failure_strand_count: FailureCountOut = Field(description="Eq 20, fully contracted and at 45°")
     worst_case_strand_stress_pa: float = Field(description="σ at 45° with this N, eq 17 [Pa]")
     s_scale: float = Field(description="S_scale used [-]")
     s_scale_computed: float = Field(description="S_scale of eq 34 [-]")
-    material: MaterialUsed
-    warnings: list[WarningOut]
+    material: MaterialUsed = Field(description="The material properties used")
+    warnings: list[WarningOut] = Field(description="Risks in this design; empty when none")
 
 
 class StrandCountSweepIn(WithGeometry):
@@ -369,7 +377,7 @@ class HealthOut(BaseModel):
 
 class MaterialOut(BaseModel):
     id: str = Field(description="Preset id, for the material field of /design")
-    name: str
+    name: str = Field(description="Human-readable name")
     youngs_modulus_pa: float = Field(description="E [Pa]")
     poisson_ratio: float = Field(description="ν [-]")
     tensile_strength_pa: float = Field(description="σ_u [Pa]")
@@ -379,7 +387,7 @@ class MaterialOut(BaseModel):
 
 
 class MaterialsOut(BaseModel):
-    materials: list[MaterialOut]
+    materials: list[MaterialOut] = Field(description="The presets, nylon (the paper's) first")
 
 
 class Table1Row(BaseModel):
@@ -392,11 +400,11 @@ class Table1Row(BaseModel):
 class SScaleFitOut(BaseModel):
     pressure_pa: float = Field(description="P [Pa]")
     s_scale: float = Field(description="S_scale fitted to measured hysteresis [-]")
-    source: str
+    source: str = Field(description="Who fitted it")
 
 
 class ReferenceOut(BaseModel):
     braid_sample: dict[str, float] = Field(description="The braid of the paper's §2.1")
     test_muscle: dict[str, float] = Field(description="The hysteresis test muscle of §3.3")
-    min_braid_angle_table1: list[Table1Row]
-    s_scale_fitted: list[SScaleFitOut]
+    min_braid_angle_table1: list[Table1Row] = Field(description="The paper's Table 1")
+    s_scale_fitted: list[SScaleFitOut] = Field(description="S_scale fitted to experiments")

@@ -7,6 +7,7 @@ from typing import Any
 
 from fastapi.testclient import TestClient
 
+from app.main import app
 from tests.api.conftest import DavisCaldwell2006Measured
 from tests.api.support import POST_PATHS, ok
 from tests.published import DavisCaldwell2006
@@ -174,3 +175,16 @@ def test_no_reference_number_is_non_finite(client: TestClient) -> None:
 
     for path in ("/api/v1/materials", "/api/v1/reference"):
         walk(_get(client, path))
+
+
+def test_every_field_of_the_api_is_described() -> None:
+    schemas = app.openapi()["components"]["schemas"]
+    fastapi_own = {"HTTPValidationError", "ValidationError"}
+    undescribed = [
+        f"{name}.{prop}"
+        for name, schema in schemas.items()
+        if name not in fastapi_own
+        for prop, spec in schema.get("properties", {}).items()
+        if not spec.get("description")
+    ]
+    assert undescribed == []
