@@ -408,3 +408,37 @@ class ReferenceOut(BaseModel):
     test_muscle: dict[str, float] = Field(description="The hysteresis test muscle of §3.3")
     min_braid_angle_table1: list[Table1Row] = Field(description="The paper's Table 1")
     s_scale_fitted: list[SScaleFitOut] = Field(description="S_scale fitted to experiments")
+
+
+class HysteresisSweepIn(WithGeometry):
+    """Hysteresis curves of one actuator at several pressures, S_scale from eq 34 at each."""
+
+    model_config = _examples(
+        {
+            **{k: v for k, v in PAPER_MUSCLE.items() if k != "pressure_pa"},
+            "pressures_pa": [100_000.0, 300_000.0, 500_000.0],
+        }
+    )
+    strand_diameter_m: StrandDiameter
+    strand_count: StrandCount
+    pressures_pa: list[Pressure] = Field(
+        min_length=1, max_length=16, description="P of each curve [Pa], 1 to 16 pressures"
+    )
+    friction_coefficient: FrictionCoefficient
+    youngs_modulus_pa: YoungsModulus
+    poisson_ratio: PoissonRatio
+    points: int = Field(default=201, ge=2, le=10_000, description="Points per curve")
+
+
+class HysteresisSweepOut(BaseModel):
+    pressure_pa: list[float] = Field(description="P of each curve (rows below) [Pa]")
+    s_scale: list[float] = Field(description="S_scale of eq 34 at each pressure [-]")
+    min_braid_angle_deg: float = Field(description="θ_min, eq 8 [deg]")
+    max_braid_angle_deg: float = Field(description="θ_max [deg]")
+    braid_angle_deg: list[float] = Field(description="θ at each point, all curves [deg]")
+    length_m: list[float] = Field(description="L = b·cos θ, eq 19 [m]")
+    contraction: list[float] = Field(description="1 − L/L_max, 0 to the maximum [-]")
+    force_static_n: list[list[float]] = Field(description="F_static, eq 10: a row per P [N]")
+    friction_force_n: list[list[float]] = Field(description="F_friction, eq 30 [N]")
+    force_contracting_n: list[list[float]] = Field(description="eq 31, clipped at 0 [N]")
+    force_extending_n: list[list[float]] = Field(description="eq 31 [N]")

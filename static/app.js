@@ -170,9 +170,9 @@ function requestPlan(v) {
       path: "hysteresis",
       body: { ...hysteresisBase, ...pick(v, ["pressure_pa", "s_scale"]) },
     },
-    ...Object.fromEntries(others.map((pa) => [
-      `hysteresis@${pa}`, { path: "hysteresis", body: { ...hysteresisBase, pressure_pa: pa } },
-    ])),
+    ...(others.length ? {
+      hysteresisOthers: { path: "sweeps/hysteresis", body: { ...hysteresisBase, pressures_pa: others } },
+    } : {}),
     strandSweep: {
       path: "sweeps/strand-count",
       body: {
@@ -368,14 +368,21 @@ function measuredMarkers(x, y, name, extra = {}) {
 /** Static curve at the design pressure; both friction branches at every pressure. */
 function hysteresisTraces(outcomes, designPa) {
   const design = outcomes.hysteresis.data;
-  const others = Object.keys(outcomes).filter((key) => key.startsWith("hysteresis@") && outcomes[key].ok);
+  const sweep = outcomes.hysteresisOthers?.ok ? outcomes.hysteresisOthers.data : null;
+  const others = sweep ? sweep.pressure_pa.map((pa, i) => ({
+    pa,
+    data: {
+      contraction: sweep.contraction,
+      force_contracting_n: sweep.force_contracting_n[i],
+      force_extending_n: sweep.force_extending_n[i],
+    },
+    color: OTHER_COLORS[i % OTHER_COLORS.length],
+    width: 1.5,
+    title: kpaLabel(pa),
+  })) : [];
   const curves = [
     { pa: designPa, data: design, color: COLORS.design, width: 2.5, title: `${kpaLabel(designPa)} (design)` },
-    ...others.map((key, i) => {
-      const pa = Number(key.split("@")[1]);
-      const color = OTHER_COLORS[i % OTHER_COLORS.length];
-      return { pa, data: outcomes[key].data, color, width: 1.5, title: kpaLabel(pa) };
-    }),
+    ...others,
   ].sort((a, b) => a.pa - b.pa);
   const staticStyle = { line: { color: COLORS.static, dash: "dot", width: 2 } };
   const staticCurve = line(percent(design.contraction), design.force_static_n, `static, ${kpaLabel(designPa)}`, staticStyle);

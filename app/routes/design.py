@@ -11,6 +11,8 @@ from app.responses import JSONResponse
 from app.schemas import (
     DesignIn,
     DesignOut,
+    HysteresisSweepIn,
+    HysteresisSweepOut,
     PressureSweepIn,
     PressureSweepOut,
     StrandCountSweepIn,
@@ -18,6 +20,7 @@ from app.schemas import (
 )
 from pma_core import braid, friction, gap, strength
 from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD
+from pma_core.hysteresis import hysteresis_curves
 
 router = APIRouter(prefix="/api/v1", tags=["design"], default_response_class=JSONResponse)
 
@@ -83,5 +86,44 @@ async def pressure_sweep(body: PressureSweepIn) -> JSONResponse:
             "min_strand_count": strength.min_strand_count(full).astype(np.int64),
             "worst_case_min_strand_count_exact": worst,
             "worst_case_min_strand_count": strength.min_strand_count(worst).astype(np.int64),
+        }
+    )
+
+
+@router.post("/sweeps/hysteresis", response_model=HysteresisSweepOut)
+async def hysteresis_sweep(body: HysteresisSweepIn) -> JSONResponse:
+    """The hysteresis curves (eqs 10, 29-31) at each of several pressures, in one request.
+
+    The contraction grid is the same for every pressure (θ_min does not depend on P); each
+    force array has a row per pressure.
+    """
+    with core_errors(HysteresisSweepIn.model_fields):
+        geo = body.geometry(need_length=True)
+        assert geo.strand_length_m is not None
+        assert geo.turns is not None
+        design = (geo.strand_length_m, geo.turns, body.strand_diameter_m, body.strand_count)
+        material = (body.friction_coefficient, body.youngs_modulus_pa, body.poisson_ratio)
+        curves = [
+            hysteresis_curves(*design, p, *material, points=body.points) for p in body.pressures_pa
+        ]
+    first = curves[0]
+    return JSONResponse(
+        {
+            "pressure_pa": body.pressures_pa,
+            "s_scale": [c.s_scale for c in curves],
+            "min_braid_angle_deg": float(np.degrees(first.min_braid_angle_rad)),
+            "max_braid_angle_deg": float(np.degrees(first.max_braid_angle_rad)),
+            "braid_angle_deg": np.degrees(first.braid_angle_rad),
+            "length_m": first.length_m,
+            "contraction": first.contraction,
+            **{
+                name: np.stack([getattr(c, name) for c in curves])
+                for name in (
+                    "force_static_n",
+                    "friction_force_n",
+                    "force_contracting_n",
+                    "force_extending_n",
+                )
+            },
         }
     )

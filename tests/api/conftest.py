@@ -196,6 +196,13 @@ def opensim_export(paper_muscle: dict[str, Any]) -> dict[str, Any]:
 
 
 @pytest.fixture
+def hysteresis_sweep(paper_muscle: dict[str, Any]) -> dict[str, Any]:
+    """The §3.3 test muscle at 100, 300 and 500 kPa."""
+    body = {k: v for k, v in paper_muscle.items() if k not in ("pressure_pa", "s_scale")}
+    return {**body, "pressures_pa": [100e3, 300e3, 500e3]}
+
+
+@pytest.fixture
 def valid_bodies(
     paper_braid: dict[str, Any],
     paper_gap: dict[str, Any],
@@ -206,6 +213,7 @@ def valid_bodies(
     strand_sweep: dict[str, Any],
     pressure_sweep: dict[str, Any],
     opensim_export: dict[str, Any],
+    hysteresis_sweep: dict[str, Any],
 ) -> dict[str, dict[str, Any]]:
     """A body each POST endpoint accepts, by path."""
     return {
@@ -218,4 +226,5 @@ def valid_bodies(
         "/api/v1/sweeps/strand-count": strand_sweep,
         "/api/v1/sweeps/pressure": pressure_sweep,
         "/api/v1/export/opensim": opensim_export,
+        "/api/v1/sweeps/hysteresis": hysteresis_sweep,
     }

@@ -119,6 +119,7 @@ POST_PATHS = (
     "/api/v1/sweeps/strand-count",
     "/api/v1/sweeps/pressure",
     "/api/v1/export/opensim",
+    "/api/v1/sweeps/hysteresis",
 )
 #: Those that take the braid's geometry (D_o, or b with n).
 GEOMETRY_PATHS = tuple(path for path in POST_PATHS if path != "/api/v1/s-scale")

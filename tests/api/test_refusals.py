@@ -32,9 +32,10 @@ STRAND_COUNT_PATHS = (
     "/api/v1/hysteresis",
     "/api/v1/design",
     "/api/v1/export/opensim",
+    "/api/v1/sweeps/hysteresis",
 )
 #: Endpoints that need the actuator's length, not only D_o.
-LENGTH_PATHS = ("/api/v1/hysteresis", "/api/v1/export/opensim")
+LENGTH_PATHS = ("/api/v1/hysteresis", "/api/v1/export/opensim", "/api/v1/sweeps/hysteresis")
 MARK = 123456.789
 """A number placed in a body and replaced by raw JSON text (NaN, Infinity, ...)."""
 

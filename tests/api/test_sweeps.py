@@ -187,3 +187,30 @@ def test_any_strand_range_is_cut_at_the_limit(
     data = ok(client, STRANDS, body)
     assert data["strand_count"] == list(range(low, min(low + span, 389) + 1))
     assert {len(data[name]) for name in STRAND_ARRAYS} == {len(data["strand_count"])}
+
+
+def test_hysteresis_sweep_is_the_hysteresis_curve_at_each_pressure(
+    client: TestClient, hysteresis_sweep: dict[str, Any]
+) -> None:
+    family = ok(client, "/api/v1/sweeps/hysteresis", {**hysteresis_sweep, "points": 21})
+    assert family["pressure_pa"] == [100e3, 300e3, 500e3]
+    single_body = {k: v for k, v in hysteresis_sweep.items() if k != "pressures_pa"}
+    for row, pressure in enumerate(family["pressure_pa"]):
+        single = ok(
+            client, "/api/v1/hysteresis", {**single_body, "pressure_pa": pressure, "points": 21}
+        )
+        assert family["s_scale"][row] == single["s_scale"]
+        assert family["contraction"] == single["contraction"]
+        for name in ("force_static_n", "friction_force_n", "force_contracting_n"):
+            assert family[name][row] == single[name], name
+    assert round(family["s_scale"][1], 1) == 15.8
+
+
+def test_hysteresis_sweep_caps_the_number_of_pressures(
+    client: TestClient, hysteresis_sweep: dict[str, Any]
+) -> None:
+    response = client.post(
+        "/api/v1/sweeps/hysteresis", json={**hysteresis_sweep, "pressures_pa": [1e5] * 17}
+    )
+    assert response.status_code == 422
+    assert response.json()["detail"][0]["loc"] == ["body", "pressures_pa"]
