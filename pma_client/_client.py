@@ -208,6 +208,7 @@ class PMAClient(_Base):
     strand_count_sweep = _sync(endpoints.strand_count_sweep)
     pressure_sweep = _sync(endpoints.pressure_sweep)
     opensim_export = _sync(endpoints.opensim_export)
+    hysteresis_sweep = _sync(endpoints.hysteresis_sweep)
     materials = _sync(endpoints.materials)
     reference = _sync(endpoints.reference)
 
@@ -282,5 +283,6 @@ class AsyncPMAClient(_Base):
     strand_count_sweep = _async(endpoints.strand_count_sweep)
     pressure_sweep = _async(endpoints.pressure_sweep)
     opensim_export = _async(endpoints.opensim_export)
+    hysteresis_sweep = _async(endpoints.hysteresis_sweep)
     materials = _async(endpoints.materials)
     reference = _async(endpoints.reference)

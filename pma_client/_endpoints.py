@@ -12,7 +12,7 @@ validates them and a refusal raises :class:`~pma_client.PMAValidationError`.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Generic, Literal, TypeVar
 
@@ -22,6 +22,7 @@ from pma_client._models import (
     GapArea,
     Health,
     Hysteresis,
+    HysteresisSweep,
     Material,
     MinBraidAngle,
     OpenSimActuator,
@@ -431,6 +432,55 @@ def pressure_sweep(
         Any other error status, or an unexpected response.
     """
     return _post("/api/v1/sweeps/pressure", PressureSweep.from_json, locals())
+
+
+def hysteresis_sweep(
+    *,
+    strand_diameter_m: float,
+    strand_count: int,
+    pressures_pa: Sequence[float],
+    friction_coefficient: float,
+    youngs_modulus_pa: float,
+    poisson_ratio: float,
+    strand_length_m: float | None = None,
+    turns: float | None = None,
+    theoretical_diameter_m: float | None = None,
+    points: int | None = None,
+) -> Call[HysteresisSweep]:
+    """The hysteresis curves (eqs 10, 29-31) at several pressures, S_scale from eq 34.
+
+    ``POST /api/v1/sweeps/hysteresis``.
+
+    Parameters
+    ----------
+    strand_diameter_m : float
+        D_s [m].
+    strand_count : int
+        N [-].
+    pressures_pa : sequence of float
+        P of each curve [Pa], 1 to 16 of them.
+    friction_coefficient : float
+        f_s [-].
+    youngs_modulus_pa, poisson_ratio : float
+        E [Pa] and ν [-] of the strand material.
+    strand_length_m, turns, theoretical_diameter_m : float, optional
+        b [m], n [-], D_o [m]: two of them, b among them.
+    points : int, optional
+        Points per curve, 2 to 10 000 (service default 201).
+
+    Returns
+    -------
+    HysteresisSweep
+
+    Raises
+    ------
+    PMAValidationError
+        The input was refused.
+    PMAError
+        Any other error status, or an unexpected response.
+    """
+    fields = {**locals(), "pressures_pa": [float(p) for p in pressures_pa]}
+    return _post("/api/v1/sweeps/hysteresis", HysteresisSweep.from_json, fields)
 
 
 def opensim_export(

@@ -49,10 +49,12 @@ def _text(data: Json, key: str) -> str:
     return value
 
 
-def _array(data: Json, key: str, kinds: str, dtype: type[np.generic]) -> npt.NDArray[Any]:
+def _array(
+    data: Json, key: str, kinds: str, dtype: type[np.generic], ndim: int = 1
+) -> npt.NDArray[Any]:
     raw = np.asarray(data[key])
-    if raw.ndim != 1 or (raw.size and raw.dtype.kind not in kinds):
-        raise TypeError(f"{key} should be a list of numbers")
+    if raw.ndim != ndim or (raw.size and raw.dtype.kind not in kinds):
+        raise TypeError(f"{key} should be a {'table' if ndim == 2 else 'list'} of numbers")
     array = raw.astype(dtype)
     array.flags.writeable = False
     return array
@@ -60,6 +62,10 @@ def _array(data: Json, key: str, kinds: str, dtype: type[np.generic]) -> npt.NDA
 
 def _floats(data: Json, key: str) -> FloatArray:
     return _array(data, key, "iuf", np.float64)
+
+
+def _rows(data: Json, key: str) -> FloatArray:
+    return _array(data, key, "iuf", np.float64, ndim=2)
 
 
 def _wholes(data: Json, key: str) -> IntArray:
@@ -334,6 +340,56 @@ class Hysteresis:
             friction_force_n=_floats(data, "friction_force_n"),
             force_contracting_n=_floats(data, "force_contracting_n"),
             force_extending_n=_floats(data, "force_extending_n"),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class HysteresisSweep:
+    """``POST /api/v1/sweeps/hysteresis``: the hysteresis curves at several pressures.
+
+    The contraction grid is shared; each force array has a row per pressure.
+
+    Attributes
+    ----------
+    pressure_pa : FloatArray
+        P of each row [Pa].
+    s_scale : FloatArray
+        S_scale of eq 34 at each pressure [-].
+    min_braid_angle_deg, max_braid_angle_deg : float
+        θ_min (eq 8) and θ_max [deg].
+    braid_angle_deg, length_m, contraction : FloatArray
+        θ [deg], L [m] and contraction [-] at each point.
+    force_static_n, friction_force_n, force_contracting_n, force_extending_n : FloatArray
+        Eqs 10, 30 and 31 [N], shape (pressures, points).
+    """
+
+    pressure_pa: FloatArray
+    s_scale: FloatArray
+    min_braid_angle_deg: float
+    max_braid_angle_deg: float
+    braid_angle_deg: FloatArray
+    length_m: FloatArray
+    contraction: FloatArray
+    force_static_n: FloatArray
+    friction_force_n: FloatArray
+    force_contracting_n: FloatArray
+    force_extending_n: FloatArray
+
+    @classmethod
+    def from_json(cls, data: Json) -> Self:
+        """Build from the response's JSON object."""
+        return cls(
+            pressure_pa=_floats(data, "pressure_pa"),
+            s_scale=_floats(data, "s_scale"),
+            min_braid_angle_deg=_number(data, "min_braid_angle_deg"),
+            max_braid_angle_deg=_number(data, "max_braid_angle_deg"),
+            braid_angle_deg=_floats(data, "braid_angle_deg"),
+            length_m=_floats(data, "length_m"),
+            contraction=_floats(data, "contraction"),
+            force_static_n=_rows(data, "force_static_n"),
+            friction_force_n=_rows(data, "friction_force_n"),
+            force_contracting_n=_rows(data, "force_contracting_n"),
+            force_extending_n=_rows(data, "force_extending_n"),
         )
 
 

@@ -24,6 +24,7 @@ from pma_client import (
     FailureStrandCount,
     GapArea,
     Hysteresis,
+    HysteresisSweep,
     MinBraidAngle,
     OpenSimActuator,
     PMAClient,
@@ -66,6 +67,7 @@ POST_ENDPOINTS: dict[str, tuple[str, type, str]] = {
     "strand_count_sweep": ("/api/v1/sweeps/strand-count", StrandCountSweep, "StrandCountSweepOut"),
     "pressure_sweep": ("/api/v1/sweeps/pressure", PressureSweep, "PressureSweepOut"),
     "opensim_export": ("/api/v1/export/opensim", OpenSimActuator, "OpenSimOut"),
+    "hysteresis_sweep": ("/api/v1/sweeps/hysteresis", HysteresisSweep, "HysteresisSweepOut"),
 }
 
 
@@ -328,6 +330,23 @@ def test_materials(pma: PMAClient, paper: DavisCaldwell2006) -> None:
     assert "Brydson" in nylon.sources["youngs_modulus_pa"]
     with pytest.raises(TypeError):
         nylon.sources["youngs_modulus_pa"] = "changed"  # type: ignore[index]
+
+
+def test_hysteresis_sweep_has_a_row_per_pressure(pma: PMAClient) -> None:
+    family = pma.hysteresis_sweep(
+        strand_length_m=0.65,
+        turns=4.7,
+        strand_diameter_m=0.25e-3,
+        strand_count=240,
+        pressures_pa=[200e3, 300e3],
+        friction_coefficient=0.2,
+        youngs_modulus_pa=3e9,
+        poisson_ratio=0.4,
+        points=11,
+    )
+    assert family.force_extending_n.shape == (2, 11)
+    assert family.s_scale.round(1).tolist() == [18.1, 15.8]
+    assert np.all(family.force_contracting_n <= family.force_extending_n)
 
 
 def test_opensim_export(pma: PMAClient) -> None:
