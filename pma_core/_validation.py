@@ -6,6 +6,7 @@ parameter, the first offending value and the reason.
 
 from __future__ import annotations
 
+import math
 from typing import Any, TypeAlias
 
 import numpy as np
@@ -18,9 +19,14 @@ Floats: TypeAlias = Any
 
 def as_floats(name: str, value: npt.ArrayLike) -> FloatArray:
     """Return ``value`` as a float array, refusing NaN and infinities."""
+    if type(value) is float or type(value) is int:
+        # Fast path for plain Python numbers (the API's case): no numpy reductions.
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be a finite number, got {value:g}")
+        return np.asarray(value, dtype=np.float64)
     array = np.asarray(value, dtype=np.float64)
     finite = np.isfinite(array)
-    if not finite.all():
+    if not all_true(finite):
         raise ValueError(f"{name} must be a finite number, got {_first(array, ~finite)}")
     return array
 
@@ -29,7 +35,7 @@ def positive(name: str, value: npt.ArrayLike) -> FloatArray:
     """Return ``value`` as floats after checking every element is > 0."""
     array = as_floats(name, value)
     bad = array <= 0
-    if bad.any():
+    if any_true(bad):
         raise ValueError(f"{name} must be greater than 0, got {_first(array, bad)}")
     return array
 
@@ -38,7 +44,7 @@ def at_least(name: str, value: npt.ArrayLike, minimum: float, reason: str) -> Fl
     """Return ``value`` as floats after checking every element is >= ``minimum``."""
     array = as_floats(name, value)
     bad = array < minimum
-    if bad.any():
+    if any_true(bad):
         raise ValueError(
             f"{name} must be at least {minimum:g} ({reason}), got {_first(array, bad)}"
         )
@@ -49,7 +55,7 @@ def within(name: str, value: npt.ArrayLike, low: float, high: float, reason: str
     """Return ``value`` as floats after checking ``low <= value < high``."""
     array = as_floats(name, value)
     bad = (array < low) | (array >= high)
-    if bad.any():
+    if any_true(bad):
         raise ValueError(
             f"{name} must lie in [{low:g}, {high:g}) ({reason}), got {_first(array, bad)}"
         )
@@ -59,6 +65,15 @@ def within(name: str, value: npt.ArrayLike, low: float, high: float, reason: str
 def scalar_or_array(array: FloatArray) -> Floats:
     """Unwrap a 0-d result to a numpy scalar so scalar input gives scalar output."""
     return array[()]
+
+
+def any_true(mask: npt.NDArray[np.bool_]) -> bool:
+    # A 0-d mask is a numpy bool: truth-test it without a reduction.
+    return bool(mask) if mask.ndim == 0 else bool(mask.any())
+
+
+def all_true(mask: npt.NDArray[np.bool_]) -> bool:
+    return bool(mask) if mask.ndim == 0 else bool(mask.all())
 
 
 def _first(array: FloatArray, mask: npt.NDArray[np.bool_]) -> str:

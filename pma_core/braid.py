@@ -14,6 +14,8 @@ References
 
 from __future__ import annotations
 
+from dataclasses import dataclass, replace
+
 import numpy as np
 import numpy.typing as npt
 
@@ -75,7 +77,7 @@ def strand_fill_ratio(
 
 def _require_fit(ratio: FloatArray, d_s: FloatArray, n: FloatArray, d_o: FloatArray) -> None:
     jammed = ratio >= 1.0
-    if not jammed.any():
+    if not check.any_true(jammed):
         return
     i = np.unravel_index(int(np.argmax(jammed)), jammed.shape)
     n_i, d_s_i, d_o_i = np.broadcast_arrays(n, d_s, d_o)
@@ -393,6 +395,77 @@ def stroke(
     return check.scalar_or_array(np.asarray(max_length(*args)) - np.asarray(min_length(*args)))
 
 
+@dataclass(frozen=True)
+class BraidLimits:
+    """The angle range and contractile range of one braid (eqs 8-9), SI units and radians.
+
+    Lengths are None when the strand length is not given.
+    """
+
+    min_braid_angle_rad: Floats
+    jamming_angle_rad: Floats
+    max_braid_angle_rad: Floats
+    max_contraction: Floats
+    max_length_m: Floats | None = None
+    min_length_m: Floats | None = None
+    stroke_m: Floats | None = None
+
+
+def braid_limits(
+    strand_diameter_m: npt.ArrayLike,
+    strand_count: npt.ArrayLike,
+    theoretical_diameter_m: npt.ArrayLike,
+    strand_length_m: npt.ArrayLike | None = None,
+) -> BraidLimits:
+    r"""Every limit of one braid at once: :math:`\theta_{min}` computed and checked once.
+
+    .. math:: \theta_{min} = \frac{1}{2}\sin^{-1}\frac{D_s N}{\pi D_o} \quad (8), \qquad
+        \theta_{max} = \min(\theta_n, 90° - \theta_{min}), \qquad
+        L = b\cos\theta \quad (9, 19)
+
+    Parameters
+    ----------
+    strand_diameter_m, strand_count, theoretical_diameter_m : array_like
+        :math:`D_s` [m], :math:`N` [-], :math:`D_o` [m] as in :func:`min_braid_angle`.
+    strand_length_m : array_like, optional
+        :math:`b` [m]; gives the lengths and the stroke.
+
+    Returns
+    -------
+    BraidLimits
+
+    References
+    ----------
+    Davis & Caldwell 2006, eqs 8, 9 and 19. :doi:`10.1177/0278364906063227`
+
+    Examples
+    --------
+    >>> limits = braid_limits(0.25e-3, 120, 0.031)
+    >>> theta_min = round(float(np.degrees(limits.min_braid_angle_rad)), 1)
+    >>> theta_min, round(float(limits.max_contraction), 4)
+    (9.0, 0.4155)
+    """
+    theta_min = np.asarray(min_braid_angle(strand_diameter_m, strand_count, theoretical_diameter_m))
+    theta_jam = np.pi / 2 - theta_min
+    theta_max = np.minimum(NEUTRAL_BRAID_ANGLE_RAD, theta_jam)
+    cos_min, cos_max = np.cos(theta_min), np.cos(theta_max)
+    limits = BraidLimits(
+        min_braid_angle_rad=check.scalar_or_array(theta_min),
+        jamming_angle_rad=check.scalar_or_array(theta_jam),
+        max_braid_angle_rad=check.scalar_or_array(theta_max),
+        max_contraction=check.scalar_or_array(1.0 - cos_max / cos_min),
+    )
+    if strand_length_m is None:
+        return limits
+    b = check.positive("strand_length_m", strand_length_m)
+    return replace(
+        limits,
+        max_length_m=check.scalar_or_array(b * cos_min),
+        min_length_m=check.scalar_or_array(b * cos_max),
+        stroke_m=check.scalar_or_array(b * (cos_min - cos_max)),
+    )
+
+
 def check_reachable_angle(
     braid_angle_rad: npt.ArrayLike,
     strand_diameter_m: npt.ArrayLike,
@@ -415,7 +488,7 @@ def check_reachable_angle(
     # A relative tolerance so that θ_min itself, round-tripped through degrees, is reachable.
     slack = 1e-9 * np.maximum(theta_min, 1.0)
     bad = (theta < theta_min - slack) | (theta > np.pi / 2 - theta_min + slack)
-    if bad.any():
+    if check.any_true(bad):
         i = np.unravel_index(int(np.argmax(bad)), bad.shape)
         theta_b, low_b = np.broadcast_arrays(theta, theta_min)
         low = np.degrees(low_b[i])

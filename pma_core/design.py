@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from pma_core import braid, friction, gap, strength
+from pma_core._validation import Floats
 from pma_core.force import static_force
 from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD
 
@@ -113,9 +114,8 @@ def design_report(design: Design) -> DesignReport:
     """
     d = design
     geometry = (d.strand_diameter_m, d.strand_count, d.theoretical_diameter_m)
-    theta_min = float(braid.min_braid_angle(*geometry))
-    theta_max = float(braid.max_braid_angle(*geometry))
-    lengths = _lengths(d, theta_min, theta_max)
+    limits = braid.braid_limits(*geometry, d.strand_length_m)
+    theta_min = float(limits.min_braid_angle_rad)
     gap_args = (d.theoretical_diameter_m, d.strand_diameter_m, d.strand_count, d.parallel_strands)
     strength_args = (d.pressure_pa, d.theoretical_diameter_m, d.strand_diameter_m)
     fail = float(
@@ -137,12 +137,12 @@ def design_report(design: Design) -> DesignReport:
     report = DesignReport(
         theoretical_diameter_m=d.theoretical_diameter_m,
         min_braid_angle_rad=theta_min,
-        jamming_angle_rad=float(np.pi / 2 - theta_min),
-        max_braid_angle_rad=theta_max,
-        max_contraction=float(braid.max_contraction(*geometry)),
-        max_length_m=lengths[0],
-        min_length_m=lengths[1],
-        stroke_m=None if lengths[0] is None or lengths[1] is None else lengths[0] - lengths[1],
+        jamming_angle_rad=float(limits.jamming_angle_rad),
+        max_braid_angle_rad=float(limits.max_braid_angle_rad),
+        max_contraction=float(limits.max_contraction),
+        max_length_m=_float_or_none(limits.max_length_m),
+        min_length_m=_float_or_none(limits.min_length_m),
+        stroke_m=_float_or_none(limits.stroke_m),
         peak_static_force_n=float(static_force(d.pressure_pa, d.theoretical_diameter_m, theta_min)),
         max_gap_width_m=float(gap.gap_width(*gap_args, gap.MAX_GAP_BRAID_ANGLE_RAD)),
         max_gap_area_m2=float(gap.max_gap_area(*gap_args)),
@@ -162,12 +162,8 @@ def design_report(design: Design) -> DesignReport:
     return _with_warnings(report, d)
 
 
-def _lengths(d: Design, theta_min: float, theta_max: float) -> tuple[float | None, float | None]:
-    if d.strand_length_m is None:
-        return None, None
-    return d.strand_length_m * float(np.cos(theta_min)), d.strand_length_m * float(
-        np.cos(theta_max)
-    )
+def _float_or_none(value: Floats | None) -> float | None:
+    return None if value is None else float(value)
 
 
 def _with_warnings(report: DesignReport, d: Design) -> DesignReport:

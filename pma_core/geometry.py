@@ -239,7 +239,7 @@ def braid_angle(value: npt.ArrayLike, name: str = "braid_angle_rad") -> npt.NDAr
     """
     theta = check.as_floats(name, value)
     bad = (theta <= 0) | (theta >= np.pi / 2)
-    if bad.any():
+    if check.any_true(bad):
         raise ValueError(
             f"{name} must lie strictly between 0 and 90° (a braid angle between strand and"
             f" axis), got {theta[bad].flat[0]:g} rad"

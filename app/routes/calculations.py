@@ -9,7 +9,6 @@ from fastapi import APIRouter, Header, Query
 from starlette.responses import Response
 
 from app.errors import core_errors
-from app.geometry import Geometry
 from app.responses import CSVResponse, JSONResponse, csv_bytes
 from app.schemas import (
     FailureStrandCountIn,
@@ -38,27 +37,28 @@ async def min_braid_angle(body: MinBraidAngleIn) -> JSONResponse:
     """Minimum braid angle θ_min (eq 8), the angle range and the contractile range (eq 9)."""
     with core_errors(MinBraidAngleIn.model_fields):
         geo = body.geometry()
-        args = (body.strand_diameter_m, body.strand_count, geo.theoretical_diameter_m)
-        result: dict[str, float | None] = {
-            "min_braid_angle_deg": _deg(braid.min_braid_angle(*args)),
-            "max_braid_angle_deg": _deg(braid.max_braid_angle(*args)),
-            "jamming_angle_deg": _deg(braid.jamming_angle(*args)),
-            "max_contraction": float(braid.max_contraction(*args)),
+        limits = braid.braid_limits(
+            body.strand_diameter_m,
+            body.strand_count,
+            geo.theoretical_diameter_m,
+            geo.strand_length_m,
+        )
+    return JSONResponse(
+        {
+            "min_braid_angle_deg": _deg(limits.min_braid_angle_rad),
+            "max_braid_angle_deg": _deg(limits.max_braid_angle_rad),
+            "jamming_angle_deg": _deg(limits.jamming_angle_rad),
+            "max_contraction": float(limits.max_contraction),
             "theoretical_diameter_m": geo.theoretical_diameter_m,
+            "max_length_m": _float_or_none(limits.max_length_m),
+            "min_length_m": _float_or_none(limits.min_length_m),
+            "stroke_m": _float_or_none(limits.stroke_m),
         }
-        result.update(_lengths(geo, body.strand_diameter_m, body.strand_count))
-    return JSONResponse(result)
+    )
 
 
-def _lengths(geo: Geometry, strand_diameter_m: float, strand_count: int) -> dict[str, float | None]:
-    if geo.strand_length_m is None or geo.turns is None:
-        return {"max_length_m": None, "min_length_m": None, "stroke_m": None}
-    args = (geo.strand_length_m, geo.turns, strand_diameter_m, strand_count)
-    return {
-        "max_length_m": float(braid.max_length(*args)),
-        "min_length_m": float(braid.min_length(*args)),
-        "stroke_m": float(braid.stroke(*args)),
-    }
+def _float_or_none(value: Any) -> float | None:
+    return None if value is None else float(value)
 
 
 @router.post("/gap-area", response_model=GapAreaOut)
