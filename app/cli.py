@@ -9,10 +9,14 @@ import uvicorn
 
 from app.cli_report import add_report_parser
 from app.logs import log_config
+from app.server import enable_tcp_nodelay_for_workers, tune_allocator
 from app.settings import LOG_LEVELS, Settings
 
 
 def _serve(args: argparse.Namespace) -> int:
+    tune_allocator()
+    if args.workers > 1:
+        enable_tcp_nodelay_for_workers()
     uvicorn.run(
         "app.main:app",
         host=args.host,

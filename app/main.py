@@ -64,7 +64,9 @@ def _add_middleware(app: FastAPI, settings: Settings) -> None:
     # Listed innermost first (each add_middleware wraps the ones before it), so every
     # response, a 413 or a 500 included, gets the security headers and a request id.
     app.add_middleware(InternalErrorMiddleware)
-    app.add_middleware(GZipMiddleware, minimum_size=1024)
+    # Level 1: the 13 MB of a 100 000-point curve compress in ~0.1 s instead of ~1.7 s at
+    # Starlette's default 9, for 6 % more bytes.
+    app.add_middleware(GZipMiddleware, minimum_size=1024, compresslevel=1)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,

@@ -91,9 +91,7 @@ def contact_area_kernel(
 ) -> FloatArray:
     r"""Eq 29 from :math:`\sin\theta\cos\theta`, unchecked: for validated inputs."""
     dilated = np.square(strand_length_m * np.sin(min_braid_angle_rad) * np.cos(min_braid_angle_rad))
-    area = np.reciprocal(sin_cos_theta)
-    area *= dilated / turns
-    return area
+    return np.divide(dilated / turns, sin_cos_theta)
 
 
 def compressive_force(pressure_pa: npt.ArrayLike, strand_diameter_m: npt.ArrayLike) -> Floats:

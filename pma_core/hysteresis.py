@@ -157,25 +157,30 @@ def hysteresis_curves(
 
     eps_max = 1.0 - np.cos(theta_max) / np.cos(theta_min)
     contraction = np.linspace(0.0, eps_max, points)
-    cos_theta = (1.0 - contraction) * np.cos(theta_min)
+    # In place where it is safe: at 10^6 points each temporary is 8 MB to allocate and fill.
+    cos_theta = np.subtract(1.0, contraction)
+    cos_theta *= np.cos(theta_min)
     static = static_force_kernel(pressure_pa, d_o, cos_theta)
-    sin_cos = np.sqrt(1.0 - np.square(cos_theta))
+    sin_cos = np.square(cos_theta)
+    np.subtract(1.0, sin_cos, out=sin_cos)
+    np.sqrt(sin_cos, out=sin_cos)
     sin_cos *= cos_theta
     friction = contact_area_kernel(strand_length_m, turns, theta_min, sin_cos)
     friction *= f_s * pressure_pa / scale
     contracting = np.subtract(static, friction)
     np.maximum(contracting, 0.0, out=contracting)
+    length = np.multiply(cos_theta, strand_length_m)
     return HysteresisCurves(
         s_scale=scale,
         min_braid_angle_rad=theta_min,
         max_braid_angle_rad=theta_max,
-        braid_angle_rad=np.arccos(cos_theta),
-        length_m=strand_length_m * cos_theta,
+        braid_angle_rad=np.arccos(cos_theta, out=cos_theta),
+        length_m=length,
         contraction=contraction,
         force_static_n=static,
         friction_force_n=friction,
         force_contracting_n=contracting,
-        force_extending_n=static + friction,
+        force_extending_n=np.add(static, friction),
     )
 
 
