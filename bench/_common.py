@@ -215,6 +215,21 @@ class Server:
         return [self.pid, *children(self.pid)]
 
 
+#: How the benchmarks start a server: "serve" as deployed (``pma-calculator serve`` for the
+#: calculator, ``bench._serve`` with the same process settings for the other apps), or
+#: "uvicorn", the stock uvicorn command without the fixes of app.server (F1, F3).
+LAUNCHERS = ("serve", "uvicorn")
+SERVICE_APP = "app.main:app"
+
+
+def pma_calculator() -> str:
+    """The ``pma-calculator`` console script of this interpreter's environment."""
+    path = Path(sys.executable).with_name("pma-calculator")
+    if not path.exists():
+        sys.exit(f"{path} not found: install the project into this environment (pip install -e .)")
+    return str(path)
+
+
 def uvicorn_command(
     app: str,
     port: int,
@@ -222,15 +237,30 @@ def uvicorn_command(
     workers: int = 1,
     cpus: str | None = None,
     factory: bool = False,
-    module: str = "uvicorn",
+    launcher: str = "serve",
 ) -> list[str]:
-    """The uvicorn command line every benchmark uses (only the app and workers vary)."""
-    loop, http = loop_and_http()
-    command = [sys.executable, "-m", module, app, "--host", HOST, "--port", str(port)]
-    command += ["--workers", str(workers), "--log-level", "warning", "--no-access-log"]
-    command += ["--loop", loop, "--http", http]
-    if factory:
-        command.append("--factory")
+    """The server command line every benchmark uses (only the app and workers vary).
+
+    ``launcher`` "serve": the calculator exactly as deployed, ``pma-calculator serve``
+    (tune_allocator, and TCP_NODELAY for workers > 1); any other app through
+    ``bench._serve``, which applies the same process settings. "uvicorn": stock uvicorn.
+    Both use the loop and HTTP implementation uvicorn picks by default (:func:`loop_and_http`).
+    """
+    where = ["--host", HOST, "--port", str(port), "--workers", str(workers)]
+    if launcher == "serve" and app == SERVICE_APP and not factory:
+        command = [pma_calculator(), "serve", *where, "--log-level", "warning"]
+    elif launcher == "serve":
+        command = [sys.executable, "-m", "bench._serve", app, *where, "--log-level", "warning"]
+        if factory:
+            command.append("--factory")
+    elif launcher == "uvicorn":
+        loop, http = loop_and_http()
+        command = [sys.executable, "-m", "uvicorn", app, *where, "--log-level", "warning"]
+        command += ["--no-access-log", "--loop", loop, "--http", http]
+        if factory:
+            command.append("--factory")
+    else:
+        raise ValueError(f"launcher must be one of {LAUNCHERS}, not {launcher!r}")
     if cpus is not None:
         command = ["taskset", "-c", cpus, *command]
     return command
@@ -245,16 +275,18 @@ def uvicorn_server(
     factory: bool = False,
     ready_path: str = "/healthz",
     log: Path | None = None,
-    module: str = "uvicorn",
+    launcher: str = "serve",
 ) -> Iterator[Server]:
-    """Run ``uvicorn app`` on a free port of 127.0.0.1 until the block ends.
+    """Run ``app`` on a free port of 127.0.0.1 until the block ends (:func:`uvicorn_command`).
 
-    ``cpus`` pins it with ``taskset -c`` (taskset execs, so the pid is uvicorn's own).
+    ``cpus`` pins it with ``taskset -c`` (taskset execs, so the pid is the server's own).
     ``log``: a file for the server's stdout and stderr, else they go to this console.
-    ``module``: what ``python -m`` runs (``bench._uvicorn_nodelay`` to try that fix).
+    ``launcher``: "serve" as deployed (default) or "uvicorn", stock uvicorn without F1/F3.
     """
     port = free_port()
-    command = uvicorn_command(app, port, workers=workers, cpus=cpus, factory=factory, module=module)
+    command = uvicorn_command(
+        app, port, workers=workers, cpus=cpus, factory=factory, launcher=launcher
+    )
     with contextlib.ExitStack() as stack:
         output = stack.enter_context(log.open("wb")) if log is not None else None
         process = subprocess.Popen(

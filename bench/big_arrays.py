@@ -9,10 +9,14 @@ baseline computes the same arrays with ``hysteresis_curves`` (and the degrees co
 the endpoint does). Target: end to end within 3x of the baseline, without and with
 ``Accept-Encoding: gzip``. Best of ``--repeat`` runs each.
 
+The process is tuned like the service (``app.server.tune_allocator()``, which
+``pma-calculator serve`` applies) before anything is measured, so subject and baseline run
+with the deployed allocator settings; ``--default-allocator`` skips that (the before).
+
 The breakdown rows time the response's parts on their own (orjson on the same dict; gzip of
-the same bytes at the middleware's level and at lower levels) to show where the time goes.
-Starlette's GZipMiddleware (level 9 unless told otherwise) compresses bodies of 128 KiB and
-more in a worker thread, so the event loop is not blocked, but a core is busy meanwhile.
+the same bytes at levels 1, 6 and 9; the app's GZipMiddleware uses 1, Starlette's default
+is 9) to show where the time goes. GZipMiddleware compresses bodies of 128 KiB and more in
+a worker thread, so the event loop is not blocked, but a core is busy meanwhile.
 """
 
 from __future__ import annotations
@@ -29,6 +33,7 @@ from typing import Any
 import numpy as np
 import orjson
 
+from app.server import tune_allocator
 from bench._common import (
     PAPER_MUSCLE_ARGS,
     PAPER_MUSCLE_BODY,
@@ -104,12 +109,25 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m bench.big_arrays", description=__doc__)
     parser.add_argument("--points", type=int, default=100_000)
     parser.add_argument("--repeat", type=int, default=15)
+    parser.add_argument(
+        "--default-allocator",
+        action="store_true",
+        help="do not apply app.server.tune_allocator() (the service applies it)",
+    )
     args = parser.parse_args(argv)
     points, repeat = args.points, args.repeat
+    if not args.default_allocator:
+        tune_allocator()
     header(
         f"big arrays: POST {PATH} with {points:,} points, in-process (ASGI, no socket)",
         "server side only: request in -> last response byte out; best of"
         f" {repeat} runs (gzip: best of {max(3, repeat // 3)})",
+        "allocator: "
+        + (
+            "glibc default (--default-allocator)"
+            if args.default_allocator
+            else "app.server.tune_allocator(), as pma-calculator serve"
+        ),
     )
     from app.main import app
 

@@ -133,6 +133,8 @@ def main(argv: list[str] | None = None) -> int:
         f" {args.runs} alternating runs per page; cold = fresh context, warm = 2nd visit",
         "calculator: window.__pmaTimings.firstPlotsMs (5 plots, 7 API requests + 2 at start);"
         " bare: same plotly.js URL, one 201-point trace",
+        "server: python -m bench._serve bench.page:bench_app --factory (the process settings"
+        " of pma-calculator serve)",
     )
     samples: dict[tuple[str, str], list[float]] = {}
     with (

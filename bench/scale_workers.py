@@ -2,8 +2,9 @@
 
 ``.venv/bin/python -m bench.scale_workers [--seconds S] [--rounds R] [--connections C]``
 
-Same uvicorn command as the other service benchmarks, only ``--workers`` differs; nothing
-is pinned. wrk (two threads, ``--connections`` connections) runs unpinned too, alternately
+The service as deployed, ``pma-calculator serve --workers 1`` against ``--workers 2``
+(app.server's TCP_NODELAY fix for workers > 1 and tune_allocator); nothing is pinned.
+wrk (two threads, ``--connections`` connections) runs unpinned too, alternately
 against the two servers, ``--rounds`` rounds of ``--seconds`` each after a warm-up; figures
 are medians over the rounds.
 
@@ -14,12 +15,13 @@ is therefore a lower bound of what a second worker gives on a machine where the 
 from elsewhere; on a 2-core box with a local load generator, about 1.2-1.5x is all there is
 to get. Reported, not judged: there is no target.
 
-What this found: with stock uvicorn, ``--workers 2`` is *slower* than one worker, because
-uvicorn binds the multi-worker listener with ``proto`` 0, asyncio then leaves Nagle on for
-every connection, and each keep-alive response waits ~40 ms for wrk's delayed ACK (uvicorn
-issue #3149; the single-request keep-alive latency row shows it). ``--tcp-nodelay-fix``
-runs both servers through ``bench._uvicorn_nodelay``, which re-wraps the listener as
-IPPROTO_TCP: the fix proposed for app/cli.py, measurable before it is applied.
+What this found before the fix: with stock uvicorn, ``--workers 2`` is *slower* than one
+worker, because uvicorn binds the multi-worker listener with ``proto`` 0, asyncio then
+leaves Nagle on for every connection, and each keep-alive response waits ~40 ms for wrk's
+delayed ACK (uvicorn issue #3149; the single-request keep-alive latency row shows it).
+``pma-calculator serve`` now re-wraps the listener as IPPROTO_TCP (app.server, F1).
+``--stock-uvicorn`` runs both servers with plain ``python -m uvicorn`` (no F1, no F3)
+to reproduce the figures before the fix.
 """
 
 from __future__ import annotations
@@ -102,28 +104,29 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--connections", type=int, default=64)
     parser.add_argument("--warmup", type=float, default=3.0)
     parser.add_argument(
-        "--tcp-nodelay-fix",
+        "--stock-uvicorn",
         action="store_true",
-        help="run both servers via bench._uvicorn_nodelay (the proposed fix, not yet applied)",
+        help="run both servers with plain uvicorn, without app.server's fixes (the before)",
     )
     args = parser.parse_args(argv)
-    module = "bench._uvicorn_nodelay" if args.tcp_nodelay_fix else "uvicorn"
+    launcher = "uvicorn" if args.stock_uvicorn else "serve"
     loop, http = loop_and_http()
     header(
         f"scale workers: POST {PATH}, uvicorn --workers 1 vs --workers 2",
-        f"uvicorn --loop {loop} --http {http}, log level warning, no access log; unpinned",
+        f"loop {loop}, http {http}, log level warning, no access log; unpinned",
         f"wrk -t2 -c{args.connections} unpinned, {args.rounds} alternating rounds of"
         f" {args.seconds:g} s after {args.warmup:g} s warm-up; medians over rounds",
         "2 cores shared by the workers and wrk: the ratio is a lower bound (see --help)",
-        f"server launched as python -m {module}",
+        "server launched as "
+        + ("stock python -m uvicorn" if args.stock_uvicorn else "pma-calculator serve"),
     )
     lua = post_lua(PAPER_BRAID_BODY)
     results: dict[int, list[WrkResult]] = {1: [], 2: []}
     latency: dict[int, float] = {}
     split: list[list[float]] = []  # CPU seconds of each worker, per 2-worker round
     with (
-        uvicorn_server("app.main:app", workers=1, module=module) as one,
-        uvicorn_server("app.main:app", workers=2, module=module) as two,
+        uvicorn_server("app.main:app", workers=1, launcher=launcher) as one,
+        uvicorn_server("app.main:app", workers=2, launcher=launcher) as two,
     ):
         servers = {1: one, 2: two}
         for workers, server in servers.items():
@@ -152,7 +155,8 @@ def main(argv: list[str] | None = None) -> int:
                     split.append([cpu_seconds([p]) - b for p, b in zip(pids, before, strict=True)])
             print(
                 f"round {round_ + 1}: 1 worker {results[1][-1].rps:,.0f} req/s,"
-                f" 2 workers {results[2][-1].rps:,.0f} req/s"
+                f" 2 workers {results[2][-1].rps:,.0f} req/s (busiest worker"
+                f" {max(split[-1]) / max(sum(split[-1]), 1e-9) * 100:.0f} % of their CPU)"
             )
         print(f"wrk: {' '.join(results[2][-1].command)}")
     print()

@@ -2,12 +2,14 @@
 
 ``.venv/bin/python -m bench.service_scalar [--seconds S] [--rounds R] [--connections C]``
 
-Both apps run under the same uvicorn command (1 worker, same loop and HTTP implementation,
-log level warning, no access log), each pinned to CPU 0 with ``taskset -c 0``; wrk (one
-thread) is pinned to CPU 1. The two are loaded in turn, A B A B ..., for ``--rounds``
-rounds of ``--seconds`` each after a short warm-up, so slow drift of the machine hits both
-alike. Figures are medians over the rounds; the ratio is the median of the rounds'
-calculator RPS / baseline RPS. Target: ratio >= 0.7.
+Both apps run as deployed, with the same process settings: the calculator by
+``pma-calculator serve --workers 1 --log-level warning`` (which applies app.server's
+tune_allocator), the baseline by ``python -m bench._serve`` (the same tuning and uvicorn
+settings), each pinned to CPU 0 with ``taskset -c 0``; wrk (one thread) is pinned to
+CPU 1. The two are loaded in turn, A B A B ..., for ``--rounds`` rounds of ``--seconds``
+each after a short warm-up, so slow drift of the machine hits both alike. Figures are
+medians over the rounds; the ratio is the median of the rounds' calculator RPS / baseline
+RPS. Target: ratio >= 0.7.
 
 Pinning does not keep other processes off CPU 0, so on a shared machine the RPS of a round
 can swing 2x. The server's CPU time per request (utime + stime from /proc/<pid>/stat over
@@ -52,8 +54,9 @@ def main(argv: list[str] | None = None) -> int:
     loop, http = loop_and_http()
     header(
         "service scalar: POST /api/v1/min-braid-angle vs a constant FastAPI endpoint",
-        f"uvicorn 1 worker, --loop {loop} --http {http}, log level warning, no access log,"
-        f" pinned to CPU {SERVER_CPU} (taskset -c {SERVER_CPU})",
+        "calculator: pma-calculator serve --workers 1; baseline: python -m bench._serve"
+        f" (same process settings); loop {loop}, http {http}, log level warning, no access"
+        f" log; pinned to CPU {SERVER_CPU} (taskset -c {SERVER_CPU})",
         f"wrk -t1 -c{args.connections} pinned to CPU {WRK_CPU} (taskset -c {WRK_CPU}),"
         f" {args.rounds} alternating rounds of {args.seconds:g} s per app after"
         f" {args.warmup:g} s warm-up; medians over rounds",

@@ -2,7 +2,8 @@
 
 ``.venv/bin/python -m bench.soak [--seconds 60] [--connections 64] [--warmup W]``
 
-One uvicorn worker (same command as the other service benchmarks) pinned to CPU 0; wrk
+The service as deployed (``pma-calculator serve --workers 1``, which applies app.server's
+tune_allocator) pinned to CPU 0; wrk
 pinned to CPU 1 cycles through a fixed, shuffled schedule of requests over every endpoint:
 the five calculations, the design report, both sweeps, materials, reference, healthz, the
 page's 201-point hysteresis and, 2 % of the time, a 100 000-point hysteresis (13 MB of
@@ -179,7 +180,7 @@ def main(argv: list[str] | None = None) -> int:
     weights = ", ".join(f"{path.split('/')[-1]} {w}%" for w, _, path, _ in MIX)
     header(
         f"soak: {args.seconds:g} s at {args.connections} connections over every endpoint",
-        f"uvicorn 1 worker --loop {loop} --http {http} pinned to CPU {SERVER_CPU};"
+        f"pma-calculator serve --workers 1 (loop {loop}, http {http}) pinned to CPU {SERVER_CPU};"
         f" wrk -t1 pinned to CPU {WRK_CPU}",
         f"mix (per 100 requests): {weights}; the 2 % hysteresis is 100 000 points",
         f"RSS: VmRSS every 1 s; after warm-up = median of {window} samples from {warmup:g} s,"
