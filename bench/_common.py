@@ -545,6 +545,7 @@ async def asgi_request(
 
     No client, no socket: what is timed around this call is the server's own work.
     """
+    path, _, query = path.partition("?")
     raw_headers = [(b"host", b"127.0.0.1"), (b"content-length", str(len(body)).encode())]
     raw_headers += [(k.lower().encode(), v.encode()) for k, v in headers]
     scope = {
@@ -556,7 +557,7 @@ async def asgi_request(
         "path": path,
         "raw_path": path.encode(),
         "root_path": "",
-        "query_string": b"",
+        "query_string": query.encode(),
         "headers": raw_headers,
         "client": (HOST, 50000),
         "server": (HOST, 80),

@@ -24,6 +24,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import gzip
+import io
 import json
 import resource
 import time
@@ -93,11 +94,17 @@ async def _measure(app: Any, points: int, repeat: int) -> dict[str, Any]:
     decoded = orjson.loads(raw.body)
     if len(decoded["force_static_n"]) != points:
         raise SystemExit(f"expected {points} points, got {len(decoded['force_static_n'])}")
+    npy_path = PATH + "?format=npy"
+    npy = await asgi_request(app, "POST", npy_path, body, gzipped)
+    if npy.status != 200 or len(np.load(io.BytesIO(npy.body))) != points:
+        raise SystemExit(f"{npy_path} answered {npy.status} or the wrong number of rows")
     # The gzip runs are slow (seconds): fewer of them.
     gzip_repeat = max(3, repeat // 3)
     return {
         "raw": raw,
         "packed": packed,
+        "npy": npy,
+        "t_npy": await _best(lambda: asgi_request(app, "POST", npy_path, body, gzipped), repeat),
         "t_raw": await _best(lambda: asgi_request(app, "POST", PATH, body, plain), repeat),
         "t_gzip": await _best(lambda: asgi_request(app, "POST", PATH, body, gzipped), gzip_repeat),
         "gzip_repeat": gzip_repeat,
@@ -156,7 +163,13 @@ def main(argv: list[str] | None = None) -> int:
     table.add(
         "gzip / baseline", f"{t_gzip / t_core:.0f}x", f"<= {TARGET:g}x", t_gzip / t_core <= TARGET
     )
+    t_npy, npy = measured["t_npy"], measured["npy"]
+    table.add("end to end, ?format=npy (binary)", f"{t_npy * 1e3:.1f} ms")
+    table.add(
+        "npy / baseline", f"{t_npy / t_core:.1f}x", f"<= {TARGET:g}x", t_npy / t_core <= TARGET
+    )
     table.add("response size, identity", f"{len(raw.body) / 1e6:.2f} MB ({len(raw.body):,} B)")
+    table.add("response size, npy", f"{len(npy.body) / 1e6:.2f} MB ({len(npy.body):,} B)")
     table.add(
         "response size, gzip",
         f"{len(packed.body) / 1e6:.2f} MB ({len(packed.body):,} B),"

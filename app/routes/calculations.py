@@ -9,7 +9,7 @@ from fastapi import APIRouter, Header, Query
 from starlette.responses import Response
 
 from app.errors import core_errors
-from app.responses import CSVResponse, JSONResponse, csv_bytes
+from app.responses import CSVResponse, JSONResponse, NPYResponse, csv_bytes, npy_bytes
 from app.schemas import (
     FailureStrandCountIn,
     FailureStrandCountOut,
@@ -122,23 +122,33 @@ async def s_scale(body: SScaleIn) -> JSONResponse:
     )
 
 
-_CSV: dict[int | str, dict[str, Any]] = {
-    200: {"content": {"text/csv": {"example": "contraction,force_static_n,...\n0.0,563.6,...\n"}}}
+_TABLES: dict[int | str, dict[str, Any]] = {
+    200: {
+        "content": {
+            "text/csv": {"example": "braid_angle_deg,length_m,...\n12.86,0.6337,...\n"},
+            "application/x-npy": {"schema": {"type": "string", "format": "binary"}},
+        }
+    }
 }
 
 
-@router.post("/hysteresis", response_model=HysteresisOut, responses=_CSV)
+@router.post("/hysteresis", response_model=HysteresisOut, responses=_TABLES)
 async def hysteresis(
     body: HysteresisIn,
     format: Annotated[
-        Literal["json", "csv"] | None,
-        Query(description="csv: the arrays as a CSV table (or send Accept: text/csv)"),
+        Literal["json", "csv", "npy"] | None,
+        Query(
+            description="csv: the arrays as a CSV table (or Accept: text/csv); npy: a NumPy"
+            " .npy file of one structured array, a field per array (or Accept:"
+            " application/x-npy), with no number formatting for large curves"
+        ),
     ] = None,
     accept: Annotated[str | None, Header(include_in_schema=False)] = None,
 ) -> Response:
     """Static force and both friction branches along the stroke (eqs 10, 29-31).
 
-    JSON by default; a CSV table of the arrays with ``?format=csv`` or ``Accept: text/csv``.
+    JSON by default; the arrays as a CSV table (``?format=csv`` or ``Accept: text/csv``) or
+    as a NumPy ``.npy`` file (``?format=npy`` or ``Accept: application/x-npy``).
     """
     with core_errors(HysteresisIn.model_fields):
         geo = body.geometry(need_length=True)
@@ -165,11 +175,22 @@ async def hysteresis(
         "force_contracting_n": curves.force_contracting_n,
         "force_extending_n": curves.force_extending_n,
     }
-    if format == "csv" or (format is None and accept is not None and "text/csv" in accept):
+    table = format or _table_format(accept)
+    if table == "csv":
         return CSVResponse(csv_bytes(arrays))
+    if table == "npy":
+        return NPYResponse(npy_bytes(arrays))
     scalars = {
         "s_scale": curves.s_scale,
         "min_braid_angle_deg": _deg(curves.min_braid_angle_rad),
         "max_braid_angle_deg": _deg(curves.max_braid_angle_rad),
     }
     return JSONResponse({**scalars, **arrays})
+
+
+def _table_format(accept: str | None) -> str:
+    if accept and "text/csv" in accept:
+        return "csv"
+    if accept and "application/x-npy" in accept:
+        return "npy"
+    return "json"

@@ -1,10 +1,11 @@
-"""The hysteresis curves as CSV: ?format=csv or Accept: text/csv."""
+"""The hysteresis curves as tables: CSV (?format=csv, Accept: text/csv) and .npy."""
 
 from __future__ import annotations
 
 import csv
 import io
 
+import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
@@ -77,3 +78,22 @@ def test_large_csv_is_gzipped_when_accepted() -> None:
     )
     assert response.headers["content-encoding"] == "gzip"
     assert len(_table(response.text)) == 100_000
+
+
+@pytest.mark.parametrize(
+    ("path", "headers"),
+    [
+        ("/api/v1/hysteresis?format=npy", {}),
+        ("/api/v1/hysteresis", {"Accept": "application/x-npy"}),
+    ],
+)
+def test_npy_is_a_structured_array_of_the_json_arrays(path: str, headers: dict[str, str]) -> None:
+    as_json = client.post("/api/v1/hysteresis", json=BODY).json()
+    response = client.post(path, json=BODY, headers={**headers, "Accept-Encoding": "gzip"})
+    assert response.status_code == 200
+    assert response.headers["content-type"] == "application/x-npy"
+    assert "content-encoding" not in response.headers  # raw floats are not worth gzipping
+    table = np.load(io.BytesIO(response.content), allow_pickle=False)
+    assert table.dtype.names == tuple(COLUMNS)
+    for column in COLUMNS:
+        assert table[column].tolist() == as_json[column]
