@@ -9,6 +9,7 @@ import numpy as np
 
 from app.errors import core_errors, field_error
 from app.schemas import DesignIn
+from pma_core import strength
 from pma_core.design import Design, DesignReport, design_report
 from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD
 from pma_core.materials import MATERIALS, Material
@@ -86,7 +87,7 @@ def _failure(r: DesignReport) -> dict[str, float]:
         "braid_angle_deg": float(np.degrees(NEUTRAL_BRAID_ANGLE_RAD)),
         "min_strand_count_exact": r.failure_strand_count_exact,
         "min_strand_count": r.failure_strand_count,
-        "worst_case_braid_angle_deg": 45.0,
+        "worst_case_braid_angle_deg": float(np.degrees(strength.WORST_CASE_BRAID_ANGLE_RAD)),
         "worst_case_min_strand_count_exact": r.worst_case_failure_strand_count_exact,
         "worst_case_min_strand_count": r.worst_case_failure_strand_count,
     }

@@ -125,6 +125,33 @@ def compressive_force(pressure_pa: npt.ArrayLike, strand_diameter_m: npt.ArrayLi
     return check.scalar_or_array(p * d_s**2)
 
 
+def flat_contact_radius(strand_diameter_m: npt.ArrayLike) -> Floats:
+    r"""Contact radius of two flat strands, the numerator of eq 32.
+
+    .. math:: a_c^{flat} = \frac{D_s}{2} \qquad (32)
+
+    Parameters
+    ----------
+    strand_diameter_m : array_like
+        :math:`D_s`, diameter of one strand [m].
+
+    Returns
+    -------
+    numpy.float64 or numpy.ndarray
+        :math:`a_c^{flat}` [m].
+
+    References
+    ----------
+    Davis & Caldwell 2006, eq 32. :doi:`10.1177/0278364906063227`
+
+    Examples
+    --------
+    >>> float(flat_contact_radius(0.25e-3))
+    0.000125
+    """
+    return check.scalar_or_array(check.positive("strand_diameter_m", strand_diameter_m) / 2.0)
+
+
 def hertz_contact_radius(
     pressure_pa: npt.ArrayLike,
     strand_diameter_m: npt.ArrayLike,
@@ -218,7 +245,7 @@ def s_scale(
     a_sphere = np.asarray(
         hertz_contact_radius(pressure_pa, strand_diameter_m, youngs_modulus_pa, poisson_ratio)
     )
-    a_flat = np.asarray(strand_diameter_m) / 2.0
+    a_flat = np.asarray(flat_contact_radius(strand_diameter_m))
     return check.scalar_or_array(a_flat / a_sphere)
 
 

@@ -89,7 +89,7 @@ async def failure_strand_count(body: FailureStrandCountIn) -> JSONResponse:
     with core_errors(FailureStrandCountIn.model_fields):
         d_o = body.geometry().theoretical_diameter_m
         args = (body.pressure_pa, d_o, body.strand_diameter_m, body.tensile_strength_pa)
-        angles = np.radians([body.braid_angle_deg, 45.0])
+        angles = [np.radians(body.braid_angle_deg), strength.WORST_CASE_BRAID_ANGLE_RAD]
         exact = strength.failure_strand_count(*args, angles, body.safety_factor)
         whole = strength.min_strand_count(exact)
     return JSONResponse(
@@ -97,7 +97,7 @@ async def failure_strand_count(body: FailureStrandCountIn) -> JSONResponse:
             "braid_angle_deg": body.braid_angle_deg,
             "min_strand_count_exact": float(exact[0]),
             "min_strand_count": int(whole[0]),
-            "worst_case_braid_angle_deg": 45.0,
+            "worst_case_braid_angle_deg": _deg(strength.WORST_CASE_BRAID_ANGLE_RAD),
             "worst_case_min_strand_count_exact": float(exact[1]),
             "worst_case_min_strand_count": int(whole[1]),
         }
@@ -116,7 +116,7 @@ async def s_scale(body: SScaleIn) -> JSONResponse:
         {
             "s_scale": scale,
             "contact_radius_m": radius,
-            "flat_contact_radius_m": body.strand_diameter_m / 2.0,
+            "flat_contact_radius_m": float(friction.flat_contact_radius(body.strand_diameter_m)),
             "compressive_force_n": force,
         }
     )
