@@ -94,7 +94,7 @@ async def _http_handler(request: Request, exc: Exception) -> Response:
 def install_error_handlers(app: FastAPI) -> None:
     """Register the 422 and HTTP error handlers on ``app``.
 
-    Unexpected exceptions are answered by :class:`app.middleware.InternalErrorMiddleware`.
+    Unexpected exceptions are answered by :class:`app.middleware.ServiceMiddleware`.
     """
     app.add_exception_handler(RequestValidationError, _validation_handler)
     app.add_exception_handler(StarletteHTTPException, _http_handler)

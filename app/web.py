@@ -26,7 +26,7 @@ from fastapi import FastAPI, Request
 from fastapi.staticfiles import StaticFiles
 from starlette.responses import HTMLResponse, Response
 from starlette.staticfiles import PathLike
-from starlette.types import ASGIApp, Message, Receive, Scope, Send
+from starlette.types import Scope
 
 PLOTLY_PLACEHOLDER = "vendor/plotly.min.js"
 """The script path written in ``index.html``; replaced by the versioned path when served."""
@@ -49,31 +49,6 @@ SECURITY_HEADERS = (
 )
 
 YEAR_CACHE = "public, max-age=31536000, immutable"
-
-
-class SecurityHeadersMiddleware:
-    """Pure ASGI middleware adding the security headers to every HTTP response.
-
-    A header the response already sets is left as it is.
-    """
-
-    def __init__(self, app: ASGIApp) -> None:
-        self.app = app
-
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] != "http":
-            await self.app(scope, receive, send)
-            return
-
-        async def send_with_headers(message: Message) -> None:
-            if message["type"] == "http.response.start":
-                headers = list(message.get("headers", ()))
-                present = {name.lower() for name, _ in headers}
-                headers.extend(header for header in SECURITY_HEADERS if header[0] not in present)
-                message["headers"] = headers
-            await send(message)
-
-        await self.app(scope, receive, send_with_headers)
 
 
 class _RevalidatedStaticFiles(StaticFiles):
@@ -119,7 +94,10 @@ def _plotly_response(request: Request) -> Response:
 
 
 def install_web(app: FastAPI, static_dir: Path) -> None:
-    """Serve the calculator page from ``static_dir`` (add :class:`SecurityHeadersMiddleware` too).
+    """Serve the calculator page from ``static_dir``.
+
+    Every response's security headers (:data:`SECURITY_HEADERS`) are added by
+    :class:`app.middleware.ServiceMiddleware`.
 
     ``index.html`` is read once, here: restart the server after editing it.
     """

@@ -12,7 +12,8 @@ from fastapi import FastAPI
 from fastapi.testclient import TestClient
 from starlette.responses import PlainTextResponse
 
-from app.web import CSP, SecurityHeadersMiddleware, plotly_js_path, plotly_url_path
+from app.middleware import ServiceMiddleware
+from app.web import CSP, SECURITY_HEADERS, plotly_js_path, plotly_url_path
 
 HARDENING = {
     "x-content-type-options": "nosniff",
@@ -51,7 +52,7 @@ def test_middleware_keeps_a_header_the_response_sets_itself() -> None:
     def own() -> PlainTextResponse:
         return PlainTextResponse("x", headers={"Referrer-Policy": "same-origin"})
 
-    inner.add_middleware(SecurityHeadersMiddleware)
+    inner.add_middleware(ServiceMiddleware, headers=SECURITY_HEADERS)
     response = TestClient(inner).get("/own")
     assert response.headers.get_list("referrer-policy") == ["same-origin"]
     assert response.headers["content-security-policy"] == CSP
