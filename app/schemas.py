@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
+import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.fields import (
@@ -24,21 +25,23 @@ from app.fields import (
     YoungsModulus,
 )
 from app.geometry import Geometry, resolve_geometry
+from pma_core import reference
+from pma_core.design import DEFAULT_GAP_AREA_LIMIT_M2
+from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD
+from pma_core.materials import NYLON
 
+_SAMPLE = reference.BRAID_SAMPLE
+#: The paper's braid sample (§2.1) and test muscle (§3.3), the examples of the API docs.
 PAPER_BRAID: dict[str, Any] = {
-    "strand_diameter_m": 0.00025,
-    "strand_count": 240,
-    "theoretical_diameter_m": 0.031,
+    "strand_diameter_m": _SAMPLE["strand_diameter_m"],
+    "strand_count": _SAMPLE["strand_count"],
+    "theoretical_diameter_m": _SAMPLE["theoretical_diameter_m"],
 }
 PAPER_MUSCLE: dict[str, Any] = {
-    "strand_length_m": 0.65,
-    "turns": 4.7,
-    "strand_diameter_m": 0.00025,
-    "strand_count": 240,
+    **reference.TEST_MUSCLE,
     "pressure_pa": 200_000.0,
-    "friction_coefficient": 0.2,
-    "youngs_modulus_pa": 3e9,
-    "poisson_ratio": 0.4,
+    "youngs_modulus_pa": NYLON.youngs_modulus_pa,
+    "poisson_ratio": NYLON.poisson_ratio,
 }
 
 
@@ -118,7 +121,7 @@ class FailureStrandCountIn(WithGeometry):
     strand_diameter_m: StrandDiameter
     tensile_strength_pa: TensileStrength
     braid_angle_deg: BraidAngle = Field(
-        default=54.7356,
+        default=round(float(np.degrees(NEUTRAL_BRAID_ANGLE_RAD)), 4),
         description="θ [deg] at which eq 20 is evaluated; default the neutral angle"
         " 54.7356°, the fully contracted state the paper uses.",
     )
@@ -233,7 +236,7 @@ class DesignIn(WithGeometry):
     safety_factor: SafetyFactor = 1.0
     s_scale: MeasuredSScale = None
     gap_area_limit_m2: float = Field(
-        default=1e-6,
+        default=DEFAULT_GAP_AREA_LIMIT_M2,
         ge=1e-12,
         le=1e-2,
         description="Largest acceptable braid gap [m²] before warning that the bladder may"

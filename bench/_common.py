@@ -31,39 +31,30 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from app.schemas import PAPER_BRAID, PAPER_MUSCLE
+
 HOST = "127.0.0.1"
 REPO_ROOT = Path(__file__).resolve().parent.parent
 STARTUP_TIMEOUT_S = 30.0
 
-#: The paper's test muscle (Davis & Caldwell 2006 §3.3), positional for hysteresis_curves:
-#: b, n, D_s, N, P, f_s, E, nu.
-PAPER_MUSCLE_ARGS: tuple[float, float, float, int, float, float, float, float] = (
-    0.65,
-    4.7,
-    0.25e-3,
-    240,
-    200e3,
-    0.2,
-    3e9,
-    0.4,
+#: The paper's test muscle (§3.3) and braid (Table 1, N = 240) as API bodies: the examples
+#: of the API's own documentation.
+PAPER_MUSCLE_BODY: dict[str, Any] = PAPER_MUSCLE
+PAPER_BRAID_BODY: dict[str, Any] = PAPER_BRAID
+#: The same muscle, positional for hysteresis_curves: b, n, D_s, N, P, f_s, E, nu.
+PAPER_MUSCLE_ARGS: tuple[float, float, float, int, float, float, float, float] = tuple(
+    PAPER_MUSCLE[name]
+    for name in (
+        "strand_length_m",
+        "turns",
+        "strand_diameter_m",
+        "strand_count",
+        "pressure_pa",
+        "friction_coefficient",
+        "youngs_modulus_pa",
+        "poisson_ratio",
+    )
 )
-#: The same muscle as an API body (POST /api/v1/hysteresis).
-PAPER_MUSCLE_BODY: dict[str, Any] = {
-    "strand_length_m": 0.65,
-    "turns": 4.7,
-    "strand_diameter_m": 0.00025,
-    "strand_count": 240,
-    "pressure_pa": 200_000.0,
-    "friction_coefficient": 0.2,
-    "youngs_modulus_pa": 3e9,
-    "poisson_ratio": 0.4,
-}
-#: The paper's braid (Table 1 row N = 240), the body of POST /api/v1/min-braid-angle.
-PAPER_BRAID_BODY: dict[str, Any] = {
-    "strand_diameter_m": 0.00025,
-    "strand_count": 240,
-    "theoretical_diameter_m": 0.031,
-}
 
 
 # ---------------------------------------------------------------- reporting

@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 import orjson
 
+from app.routes.calculations import curve_columns
 from app.server import tune_allocator
 from bench._common import (
     PAPER_MUSCLE_ARGS,
@@ -52,16 +53,7 @@ PATH = "/api/v1/hysteresis"
 
 def compute(points: int) -> dict[str, Any]:
     """The baseline: the arrays the endpoint returns, computed by pma_core alone."""
-    curves = hysteresis_curves(*PAPER_MUSCLE_ARGS, points=points)
-    return {
-        "braid_angle_deg": np.degrees(curves.braid_angle_rad),
-        "length_m": curves.length_m,
-        "contraction": curves.contraction,
-        "force_static_n": curves.force_static_n,
-        "friction_force_n": curves.friction_force_n,
-        "force_contracting_n": curves.force_contracting_n,
-        "force_extending_n": curves.force_extending_n,
-    }
+    return curve_columns(hysteresis_curves(*PAPER_MUSCLE_ARGS, points=points))
 
 
 async def _best(call: Callable[[], Awaitable[AsgiResponse]], repeat: int) -> float:

@@ -289,4 +289,15 @@ def friction_force(
     area = check.at_least("contact_area_m2", contact_area_m2, 0.0, "an area")
     scale = check.positive("s_scale", s_scale)
     p = check.at_least("pressure_pa", pressure_pa, 0.0, "a gauge pressure that inflates")
-    return check.scalar_or_array(f_s * area / scale * p)
+    return check.scalar_or_array(friction_force_kernel(f_s, np.array(area), scale, p))
+
+
+def friction_force_kernel(
+    friction_coefficient: FloatArray | float,
+    contact_area_m2: FloatArray,
+    s_scale: FloatArray | float,
+    pressure_pa: FloatArray | float,
+) -> FloatArray:
+    r"""Eq 30, unchecked and in place: ``contact_area_m2`` becomes the friction force."""
+    contact_area_m2 *= friction_coefficient * pressure_pa / s_scale
+    return contact_area_m2

@@ -17,7 +17,7 @@ import numpy as np
 import numpy.typing as npt
 
 from pma_core import _validation as check
-from pma_core._validation import Floats
+from pma_core._validation import FloatArray, Floats
 
 #: Neutral braid angle :math:`\\arccos(1/\\sqrt{3})` = 54.7356° [rad], where the static
 #: force vanishes: the fully contracted state (Schulte 1962).
@@ -224,7 +224,16 @@ def braid_angle_at_contraction(
     """
     eps = check.within("contraction", contraction, 0.0, 1.0, "a fraction of the dilated length")
     theta_min = braid_angle(min_braid_angle_rad, "min_braid_angle_rad")
-    return check.scalar_or_array(np.arccos((1.0 - eps) * np.cos(theta_min)))
+    return check.scalar_or_array(np.arccos(cos_braid_angle_kernel(eps, theta_min)))
+
+
+def cos_braid_angle_kernel(
+    contraction: FloatArray, min_braid_angle_rad: FloatArray | float
+) -> FloatArray:
+    r""":math:`\cos\theta = (1 - \varepsilon)\cos\theta_{min}`, unchecked: for validated inputs."""
+    cos_theta = np.subtract(1.0, contraction)
+    cos_theta *= np.cos(min_braid_angle_rad)
+    return cos_theta
 
 
 def braid_angle(value: npt.ArrayLike, name: str = "braid_angle_rad") -> npt.NDArray[np.float64]:

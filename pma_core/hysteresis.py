@@ -22,9 +22,9 @@ from pma_core import _validation as check
 from pma_core._validation import FloatArray, Floats
 from pma_core.braid import max_braid_angle, min_braid_angle
 from pma_core.force import static_force_kernel
-from pma_core.friction import contact_area_kernel
+from pma_core.friction import contact_area_kernel, friction_force_kernel
 from pma_core.friction import s_scale as hertz_s_scale
-from pma_core.geometry import theoretical_diameter
+from pma_core.geometry import cos_braid_angle_kernel, theoretical_diameter
 
 
 def friction_branches(
@@ -60,8 +60,15 @@ def friction_branches(
     """
     static = check.as_floats("force_static_n", force_static_n)
     friction = check.at_least("friction_force_n", friction_force_n, 0.0, "it opposes motion")
-    contracting = np.maximum(static - friction, 0.0)
-    return check.scalar_or_array(contracting), check.scalar_or_array(static + friction)
+    contracting, extending = _branches(static, friction)
+    return check.scalar_or_array(contracting), check.scalar_or_array(extending)
+
+
+def _branches(static: FloatArray, friction: FloatArray) -> tuple[FloatArray, FloatArray]:
+    # asarray: for 0-d input numpy returns a scalar, and ``out=`` needs an array.
+    contracting = np.asarray(np.subtract(static, friction))
+    np.maximum(contracting, 0.0, out=contracting)
+    return contracting, np.add(static, friction)
 
 
 @dataclass(frozen=True)
@@ -158,17 +165,15 @@ def hysteresis_curves(
     eps_max = 1.0 - np.cos(theta_max) / np.cos(theta_min)
     contraction = np.linspace(0.0, eps_max, points)
     # In place where it is safe: at 10^6 points each temporary is 8 MB to allocate and fill.
-    cos_theta = np.subtract(1.0, contraction)
-    cos_theta *= np.cos(theta_min)
+    cos_theta = cos_braid_angle_kernel(contraction, theta_min)
     static = static_force_kernel(pressure_pa, d_o, cos_theta)
     sin_cos = np.square(cos_theta)
     np.subtract(1.0, sin_cos, out=sin_cos)
     np.sqrt(sin_cos, out=sin_cos)
     sin_cos *= cos_theta
-    friction = contact_area_kernel(strand_length_m, turns, theta_min, sin_cos)
-    friction *= f_s * pressure_pa / scale
-    contracting = np.subtract(static, friction)
-    np.maximum(contracting, 0.0, out=contracting)
+    area = contact_area_kernel(strand_length_m, turns, theta_min, sin_cos)
+    friction = friction_force_kernel(f_s, area, scale, pressure_pa)
+    contracting, extending = _branches(static, friction)
     length = np.multiply(cos_theta, strand_length_m)
     return HysteresisCurves(
         s_scale=scale,
@@ -180,7 +185,7 @@ def hysteresis_curves(
         force_static_n=static,
         friction_force_n=friction,
         force_contracting_n=contracting,
-        force_extending_n=np.add(static, friction),
+        force_extending_n=extending,
     )
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal
 
 import numpy as np
+import numpy.typing as npt
 from fastapi import APIRouter, Header, Query
 from starlette.responses import Response
 
@@ -23,7 +24,7 @@ from app.schemas import (
     SScaleOut,
 )
 from pma_core import braid, friction, gap, strength
-from pma_core.hysteresis import hysteresis_curves
+from pma_core.hysteresis import HysteresisCurves, hysteresis_curves
 
 router = APIRouter(prefix="/api/v1", tags=["calculations"], default_response_class=JSONResponse)
 
@@ -166,15 +167,7 @@ async def hysteresis(
             s_scale=body.s_scale,
             points=body.points,
         )
-    arrays = {
-        "braid_angle_deg": np.degrees(curves.braid_angle_rad),
-        "length_m": curves.length_m,
-        "contraction": curves.contraction,
-        "force_static_n": curves.force_static_n,
-        "friction_force_n": curves.friction_force_n,
-        "force_contracting_n": curves.force_contracting_n,
-        "force_extending_n": curves.force_extending_n,
-    }
+    arrays = curve_columns(curves)
     table = format or _table_format(accept)
     if table == "csv":
         return CSVResponse(csv_bytes(arrays))
@@ -194,3 +187,16 @@ def _table_format(accept: str | None) -> str:
     if accept and "application/x-npy" in accept:
         return "npy"
     return "json"
+
+
+def curve_columns(curves: HysteresisCurves) -> dict[str, npt.NDArray[np.float64]]:
+    """The arrays of a hysteresis response, by JSON field name (angles in degrees)."""
+    return {
+        "braid_angle_deg": np.degrees(curves.braid_angle_rad),
+        "length_m": curves.length_m,
+        "contraction": curves.contraction,
+        "force_static_n": curves.force_static_n,
+        "friction_force_n": curves.friction_force_n,
+        "force_contracting_n": curves.force_contracting_n,
+        "force_extending_n": curves.force_extending_n,
+    }
