@@ -11,6 +11,7 @@ from starlette.responses import Response
 
 from app.errors import core_errors
 from app.responses import CSVResponse, JSONResponse, NPYResponse, csv_bytes, npy_bytes
+from app.routing import JSONBodyRoute
 from app.schemas import (
     FailureStrandCountIn,
     FailureStrandCountOut,
@@ -26,7 +27,12 @@ from app.schemas import (
 from pma_core import braid, friction, gap, strength
 from pma_core.hysteresis import HysteresisCurves, hysteresis_curves
 
-router = APIRouter(prefix="/api/v1", tags=["calculations"], default_response_class=JSONResponse)
+router = APIRouter(
+    prefix="/api/v1",
+    tags=["calculations"],
+    default_response_class=JSONResponse,
+    route_class=JSONBodyRoute,
+)
 
 
 def _deg(rad: Any) -> float:

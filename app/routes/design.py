@@ -8,6 +8,7 @@ from fastapi import APIRouter
 from app.errors import core_errors, field_error
 from app.report import design_json
 from app.responses import JSONResponse
+from app.routing import JSONBodyRoute
 from app.schemas import (
     DesignIn,
     DesignOut,
@@ -22,7 +23,12 @@ from pma_core import braid, friction, gap, strength
 from pma_core.geometry import NEUTRAL_BRAID_ANGLE_RAD
 from pma_core.hysteresis import hysteresis_curves
 
-router = APIRouter(prefix="/api/v1", tags=["design"], default_response_class=JSONResponse)
+router = APIRouter(
+    prefix="/api/v1",
+    tags=["design"],
+    default_response_class=JSONResponse,
+    route_class=JSONBodyRoute,
+)
 
 
 @router.post("/design", response_model=DesignOut)

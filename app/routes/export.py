@@ -8,10 +8,16 @@ from fastapi import APIRouter
 
 from app.errors import core_errors
 from app.responses import JSONResponse
+from app.routing import JSONBodyRoute
 from app.schemas import OpenSimIn, OpenSimOut
 from pma_core import braid
 
-router = APIRouter(prefix="/api/v1/export", tags=["export"], default_response_class=JSONResponse)
+router = APIRouter(
+    prefix="/api/v1/export",
+    tags=["export"],
+    default_response_class=JSONResponse,
+    route_class=JSONBodyRoute,
+)
 
 
 @router.post("/opensim", response_model=OpenSimOut)
