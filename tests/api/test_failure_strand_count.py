@@ -137,9 +137,10 @@ def test_45_degrees_is_the_worst_case_and_counts_round_up(
     exact, worst = data["min_strand_count_exact"], data["worst_case_min_strand_count_exact"]
     assert exact == pytest.approx(eq_20(body, angle_deg), rel=1e-9)
     assert 0 < exact <= worst * (1 + 1e-12)
-    # Whole strands: the smallest count that does not fail, never fewer than eq 20 asks.
-    assert exact <= data["min_strand_count"] < exact + 1 + 1e-6
-    assert worst <= data["worst_case_min_strand_count"] < worst + 1 + 1e-6
+    # Whole strands: the smallest count that does not fail, never fewer than eq 20 asks
+    # beyond round-off (an exact 1600.0000000000002 is 1600 strands: pma_core's ceil slack).
+    assert exact <= data["min_strand_count"] * (1 + 1e-12) < exact + 1 + 1e-6
+    assert worst <= data["worst_case_min_strand_count"] * (1 + 1e-12) < worst + 1 + 1e-6
 
 
 # paper_failure is only read, never changed: sharing it between examples is safe.

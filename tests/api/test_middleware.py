@@ -7,10 +7,12 @@ import logging
 from collections.abc import Iterator
 
 import pytest
+from fastapi import FastAPI, Request
 from fastapi.testclient import TestClient
+from starlette.responses import Response
 
 from app.main import app
-from app.middleware import MAX_BODY_BYTES
+from app.middleware import MAX_BODY_BYTES, ServiceMiddleware
 
 client = TestClient(app)
 BODY = {"strand_diameter_m": 0.00025, "strand_count": 240, "theoretical_diameter_m": 0.031}
@@ -74,3 +76,68 @@ def test_body_under_the_limit_passes() -> None:
         "/api/v1/min-braid-angle", content=padded, headers={"content-type": "application/json"}
     )
     assert response.status_code == 200
+
+
+def test_chunked_413_carries_the_headers_and_says_the_limit() -> None:
+    response = client.post(
+        "/api/v1/min-braid-angle",
+        content=iter([b" " * (MAX_BODY_BYTES + 1)]),
+        headers={"content-type": "application/json"},
+    )
+    assert response.status_code == 413
+    assert response.json() == {"detail": f"request body larger than {MAX_BODY_BYTES} bytes"}
+    assert response.headers["x-content-type-options"] == "nosniff"
+
+
+def test_chunked_body_under_the_limit_passes() -> None:
+    chunks = [json.dumps(BODY).encode()[:10], json.dumps(BODY).encode()[10:]]
+    response = client.post(
+        "/api/v1/min-braid-angle",
+        content=iter(chunks),
+        headers={"content-type": "application/json"},
+    )
+    assert response.status_code == 200
+    assert response.json()["min_braid_angle_deg"] == pytest.approx(19.0, abs=0.05)
+
+
+def _echo_app() -> FastAPI:
+    echo = FastAPI()
+
+    @echo.post("/echo")
+    async def echo_body(request: Request) -> Response:
+        return Response(await request.body(), media_type="text/plain")
+
+    return echo
+
+
+def test_the_limit_is_the_one_configured() -> None:
+    small = ServiceMiddleware(_echo_app(), max_body_bytes=100)
+    with TestClient(small) as limited:
+        assert limited.post("/echo", content=b"x" * 100).status_code == 200
+        refused = limited.post("/echo", content=b"x" * 101)
+        assert refused.status_code == 413
+        assert refused.json() == {"detail": "request body larger than 100 bytes"}
+        chunked = limited.post("/echo", content=iter([b"x" * 60, b"x" * 60]))
+        assert chunked.status_code == 413
+
+
+@pytest.mark.parametrize(
+    ("accept_encoding", "compressed"),
+    [("gzip", True), ("gzip, deflate, br", True), ("identity", False), ("br", False)],
+)
+def test_gzip_only_for_clients_that_accept_it(accept_encoding: str, compressed: bool) -> None:
+    gzipped = ServiceMiddleware(_echo_app(), gzip_options={"minimum_size": 10})
+    with TestClient(gzipped) as echo:
+        response = echo.post(
+            "/echo", content=b"a" * 5000, headers={"accept-encoding": accept_encoding}
+        )
+    assert response.status_code == 200
+    assert response.content == b"a" * 5000  # httpx decodes gzip
+    assert (response.headers.get("content-encoding") == "gzip") is compressed
+
+
+def test_small_answers_are_not_gzipped() -> None:
+    response = client.post(
+        "/api/v1/min-braid-angle", json=BODY, headers={"accept-encoding": "gzip"}
+    )
+    assert "content-encoding" not in response.headers
