@@ -11,6 +11,7 @@ import numpy.typing as npt
 import orjson
 from starlette.responses import JSONResponse as StarletteJSONResponse
 from starlette.responses import Response
+from starlette.types import Receive, Scope, Send
 
 _OPTIONS = orjson.OPT_SERIALIZE_NUMPY | orjson.OPT_NON_STR_KEYS
 
@@ -46,20 +47,44 @@ def csv_bytes(columns: Mapping[str, npt.NDArray[np.float64]]) -> bytes:
 
 
 class NPYResponse(Response):
-    """``application/x-npy``: a NumPy ``.npy`` file; see :func:`npy_bytes`."""
+    """``application/x-npy``: a NumPy ``.npy`` file of curves, sent without copying them.
+
+    The file holds one record (a 0-d structured array) whose fields are the whole curves,
+    float64, one after the other: ``numpy.load(io.BytesIO(content))["contraction"]`` is the
+    contraction curve. Column by column is how the model computes them, so the body is the
+    header and then each array's own buffer, sent as it is: no number formatting, no
+    interleaving, no copy.
+    """
 
     media_type = "application/x-npy"
 
+    def __init__(self, columns: Mapping[str, npt.NDArray[np.float64]]) -> None:
+        self.chunks = npy_chunks(columns)
+        super().__init__(b"")
+        self.headers["content-length"] = str(sum(len(chunk) for chunk in self.chunks))
 
-def npy_bytes(columns: Mapping[str, npt.NDArray[np.float64]]) -> bytes:
-    """A ``.npy`` file of one structured array with a float64 field per column.
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        await send(
+            {"type": "http.response.start", "status": self.status_code, "headers": self.raw_headers}
+        )
+        last = len(self.chunks) - 1
+        for index, chunk in enumerate(self.chunks):
+            await send({"type": "http.response.body", "body": chunk, "more_body": index < last})
 
-    Binary, so no number is formatted: ``numpy.load(io.BytesIO(content))["contraction"]``.
+
+def npy_chunks(columns: Mapping[str, npt.NDArray[np.float64]]) -> list[bytes | memoryview]:
+    """The ``.npy`` file of :class:`NPYResponse`, as its header and one buffer per column.
+
+    ``b"".join(npy_chunks(columns))`` is the file ``np.save`` writes for the 0-d array of
+    dtype ``[(name, "<f8", (rows,)), ...]`` holding the columns.
     """
-    names = list(columns)
-    table = np.empty(len(columns[names[0]]), dtype=[(name, "<f8") for name in names])
-    for name, column in columns.items():
-        table[name] = column
-    buffer = io.BytesIO()
-    np.save(buffer, table, allow_pickle=False)
-    return buffer.getvalue()
+    arrays = [np.ascontiguousarray(column, dtype="<f8") for column in columns.values()]
+    rows = len(arrays[0]) if arrays else 0
+    if any(array.shape != (rows,) for array in arrays):
+        raise ValueError("npy columns must be 1-D and of equal length")
+    dtype = np.dtype([(name, "<f8", (rows,)) for name in columns])
+    header = io.BytesIO()
+    fields = {"descr": np.lib.format.dtype_to_descr(dtype), "fortran_order": False, "shape": ()}
+    np.lib.format.write_array_header_1_0(header, fields)
+    # Cast to bytes: a memoryview's len() must count bytes, as the server counts the body.
+    return [header.getvalue(), *(array.data.cast("B") for array in arrays)]

@@ -10,7 +10,7 @@ from fastapi import APIRouter, Header, Query
 from starlette.responses import Response
 
 from app.errors import core_errors
-from app.responses import CSVResponse, JSONResponse, NPYResponse, csv_bytes, npy_bytes
+from app.responses import CSVResponse, JSONResponse, NPYResponse, csv_bytes
 from app.routing import JSONBodyRoute
 from app.schemas import (
     FailureStrandCountIn,
@@ -146,8 +146,8 @@ async def hysteresis(
         Literal["json", "csv", "npy"] | None,
         Query(
             description="csv: the arrays as a CSV table (or Accept: text/csv); npy: a NumPy"
-            " .npy file of one structured array, a field per array (or Accept:"
-            " application/x-npy), with no number formatting for large curves"
+            " .npy file (or Accept: application/x-npy): one record whose fields are the"
+            " arrays, for large curves: no number formatting, no copy"
         ),
     ] = None,
     accept: Annotated[str | None, Header(include_in_schema=False)] = None,
@@ -178,7 +178,7 @@ async def hysteresis(
     if table == "csv":
         return CSVResponse(csv_bytes(arrays))
     if table == "npy":
-        return NPYResponse(npy_bytes(arrays))
+        return NPYResponse(arrays)
     scalars = {
         "s_scale": curves.s_scale,
         "min_braid_angle_deg": _deg(curves.min_braid_angle_rad),

@@ -8,8 +8,11 @@ import io
 import numpy as np
 import pytest
 from fastapi.testclient import TestClient
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from app.main import app
+from app.responses import npy_chunks
 
 client = TestClient(app)
 BODY = {
@@ -87,7 +90,7 @@ def test_large_csv_is_gzipped_when_accepted() -> None:
         ("/api/v1/hysteresis", {"Accept": "application/x-npy"}),
     ],
 )
-def test_npy_is_a_structured_array_of_the_json_arrays(path: str, headers: dict[str, str]) -> None:
+def test_npy_is_a_record_of_the_json_arrays(path: str, headers: dict[str, str]) -> None:
     as_json = client.post("/api/v1/hysteresis", json=BODY).json()
     response = client.post(path, json=BODY, headers={**headers, "Accept-Encoding": "gzip"})
     assert response.status_code == 200
@@ -97,3 +100,31 @@ def test_npy_is_a_structured_array_of_the_json_arrays(path: str, headers: dict[s
     assert table.dtype.names == tuple(COLUMNS)
     for column in COLUMNS:
         assert table[column].tolist() == as_json[column]
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    rows=st.integers(0, 300),
+    names=st.lists(
+        st.from_regex(r"[a-z_]{1,12}", fullmatch=True), min_size=1, max_size=8, unique=True
+    ),
+)
+def test_npy_chunks_are_the_file_np_save_writes(rows: int, names: list[str]) -> None:
+    rng = np.random.default_rng(rows)
+    columns = {name: rng.normal(size=rows) for name in names}
+    record = np.zeros((), dtype=[(name, "<f8", (rows,)) for name in names])
+    for name, column in columns.items():
+        record[name] = column
+    saved = io.BytesIO()
+    np.save(saved, record, allow_pickle=False)
+    assert b"".join(npy_chunks(columns)) == saved.getvalue()
+
+
+def test_npy_chunks_send_the_arrays_without_copying_them() -> None:
+    columns = {"a": np.arange(4.0), "b": np.linspace(0.0, 1.0, 4)}
+    header, *buffers = npy_chunks(columns)
+    assert isinstance(header, bytes)
+    for buffer, column in zip(buffers, columns.values(), strict=True):
+        assert isinstance(buffer, memoryview)
+        assert len(buffer) == column.nbytes
+        assert np.shares_memory(np.frombuffer(buffer, dtype="<f8"), column)
