@@ -47,19 +47,19 @@ def csv_bytes(columns: Mapping[str, npt.NDArray[np.float64]]) -> bytes:
 
 
 class NPYResponse(Response):
-    """``application/x-npy``: a NumPy ``.npy`` file of curves, sent without copying them.
+    """``application/x-npy``: a NumPy ``.npy`` file of one record, sent without copying.
 
-    The file holds one record (a 0-d structured array) whose fields are the whole curves,
-    float64, one after the other: ``numpy.load(io.BytesIO(content))["contraction"]`` is the
-    contraction curve. Column by column is how the model computes them, so the body is the
-    header and then each array's own buffer, sent as it is: no number formatting, no
+    The record (a 0-d structured array) has a float64 field per entry of ``fields``: a
+    number, or a whole curve. ``numpy.load(io.BytesIO(content))["contraction"]`` is the
+    contraction curve. Column by column is how the model computes the curves, so the body is
+    the header and then each array's own buffer, sent as it is: no number formatting, no
     interleaving, no copy.
     """
 
     media_type = "application/x-npy"
 
-    def __init__(self, columns: Mapping[str, npt.NDArray[np.float64]]) -> None:
-        self.chunks = npy_chunks(columns)
+    def __init__(self, fields: Mapping[str, float | npt.NDArray[np.float64]]) -> None:
+        self.chunks = npy_chunks(fields)
         super().__init__(b"")
         self.headers["content-length"] = str(sum(len(chunk) for chunk in self.chunks))
 
@@ -72,19 +72,26 @@ class NPYResponse(Response):
             await send({"type": "http.response.body", "body": chunk, "more_body": index < last})
 
 
-def npy_chunks(columns: Mapping[str, npt.NDArray[np.float64]]) -> list[bytes | memoryview]:
-    """The ``.npy`` file of :class:`NPYResponse`, as its header and one buffer per column.
+def npy_chunks(fields: Mapping[str, float | npt.NDArray[np.float64]]) -> list[bytes | memoryview]:
+    """The ``.npy`` file of :class:`NPYResponse`: its header, then one buffer per field.
 
-    ``b"".join(npy_chunks(columns))`` is the file ``np.save`` writes for the 0-d array of
-    dtype ``[(name, "<f8", (rows,)), ...]`` holding the columns.
+    ``b"".join(npy_chunks(fields))`` is the file ``np.save`` writes for the 0-d record of
+    dtype ``[(name, "<f8", shape), ...]`` holding ``fields`` (numbers and 1-D arrays).
     """
-    arrays = [np.ascontiguousarray(column, dtype="<f8") for column in columns.values()]
-    rows = len(arrays[0]) if arrays else 0
-    if any(array.shape != (rows,) for array in arrays):
-        raise ValueError("npy columns must be 1-D and of equal length")
-    dtype = np.dtype([(name, "<f8", (rows,)) for name in columns])
+    # np.require keeps a 0-d array 0-d (np.ascontiguousarray would make it 1-D).
+    arrays = [np.require(value, dtype="<f8", requirements="C") for value in fields.values()]
+    if any(array.ndim > 1 for array in arrays):
+        raise ValueError("npy fields must be numbers or 1-D arrays")
+    dtype = np.dtype([(name, "<f8", a.shape) for name, a in zip(fields, arrays, strict=True)])
     header = io.BytesIO()
-    fields = {"descr": np.lib.format.dtype_to_descr(dtype), "fortran_order": False, "shape": ()}
-    np.lib.format.write_array_header_1_0(header, fields)
-    # Cast to bytes: a memoryview's len() must count bytes, as the server counts the body.
-    return [header.getvalue(), *(array.data.cast("B") for array in arrays)]
+    descr = np.lib.format.dtype_to_descr(dtype)
+    np.lib.format.write_array_header_1_0(
+        header, {"descr": descr, "fortran_order": False, "shape": ()}
+    )
+    return [header.getvalue(), *(_raw_bytes(array) for array in arrays)]
+
+
+def _raw_bytes(array: npt.NDArray[np.float64]) -> bytes | memoryview:
+    # A number is 8 bytes, copied; a curve is its own buffer, cast so that len() counts
+    # bytes, as the server counts the body.
+    return array.tobytes() if array.ndim == 0 else array.data.cast("B")

@@ -54,7 +54,8 @@ def _parse(call: Call[T], response: httpx.Response) -> T:
     if not response.is_success:
         raise error_for(response)
     try:
-        return call.parse(response.json())
+        content = response.json() if call.decode is None else call.decode(response.content)
+        return call.parse(content)
     except (ValueError, KeyError, TypeError) as problem:
         raise error_for(response, f"unexpected response ({problem!r})") from problem
 

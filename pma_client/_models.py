@@ -328,7 +328,7 @@ class Hysteresis:
 
     @classmethod
     def from_json(cls, data: Json) -> Self:
-        """Build from the response's JSON object."""
+        """Build from the response's fields (its JSON object or its .npy record)."""
         return cls(
             s_scale=_number(data, "s_scale"),
             min_braid_angle_deg=_number(data, "min_braid_angle_deg"),

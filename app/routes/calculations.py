@@ -146,8 +146,8 @@ async def hysteresis(
         Literal["json", "csv", "npy"] | None,
         Query(
             description="csv: the arrays as a CSV table (or Accept: text/csv); npy: a NumPy"
-            " .npy file (or Accept: application/x-npy): one record whose fields are the"
-            " arrays, for large curves: no number formatting, no copy"
+            " .npy file (or Accept: application/x-npy): one record with the JSON answer's"
+            " fields, for large curves: no number formatting, no copy"
         ),
     ] = None,
     accept: Annotated[str | None, Header(include_in_schema=False)] = None,
@@ -177,13 +177,13 @@ async def hysteresis(
     table = format or _table_format(accept)
     if table == "csv":
         return CSVResponse(csv_bytes(arrays))
-    if table == "npy":
-        return NPYResponse(arrays)
     scalars = {
         "s_scale": curves.s_scale,
         "min_braid_angle_deg": _deg(curves.min_braid_angle_rad),
         "max_braid_angle_deg": _deg(curves.max_braid_angle_rad),
     }
+    if table == "npy":
+        return NPYResponse({**scalars, **arrays})
     return JSONResponse({**scalars, **arrays})
 
 

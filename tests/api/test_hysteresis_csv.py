@@ -90,34 +90,37 @@ def test_large_csv_is_gzipped_when_accepted() -> None:
         ("/api/v1/hysteresis", {"Accept": "application/x-npy"}),
     ],
 )
-def test_npy_is_a_record_of_the_json_arrays(path: str, headers: dict[str, str]) -> None:
+def test_npy_is_a_record_of_the_json_answer(path: str, headers: dict[str, str]) -> None:
     as_json = client.post("/api/v1/hysteresis", json=BODY).json()
     response = client.post(path, json=BODY, headers={**headers, "Accept-Encoding": "gzip"})
     assert response.status_code == 200
     assert response.headers["content-type"] == "application/x-npy"
     assert "content-encoding" not in response.headers  # raw floats are not worth gzipping
-    table = np.load(io.BytesIO(response.content), allow_pickle=False)
-    assert table.dtype.names == tuple(COLUMNS)
-    for column in COLUMNS:
-        assert table[column].tolist() == as_json[column]
+    record = np.load(io.BytesIO(response.content), allow_pickle=False)
+    assert record.shape == ()
+    assert record.dtype.names == tuple(as_json)
+    for name, value in as_json.items():
+        assert record[name].tolist() == value, name
 
 
 @settings(max_examples=40, deadline=None)
 @given(
-    rows=st.integers(0, 300),
-    names=st.lists(
-        st.from_regex(r"[a-z_]{1,12}", fullmatch=True), min_size=1, max_size=8, unique=True
+    shapes=st.dictionaries(
+        st.from_regex(r"[a-z_]{1,12}", fullmatch=True),
+        st.sampled_from([(), (0,), (1,), (7,), (300,)]),
+        min_size=1,
+        max_size=8,
     ),
 )
-def test_npy_chunks_are_the_file_np_save_writes(rows: int, names: list[str]) -> None:
-    rng = np.random.default_rng(rows)
-    columns = {name: rng.normal(size=rows) for name in names}
-    record = np.zeros((), dtype=[(name, "<f8", (rows,)) for name in names])
-    for name, column in columns.items():
-        record[name] = column
+def test_npy_chunks_are_the_file_np_save_writes(shapes: dict[str, tuple[int, ...]]) -> None:
+    rng = np.random.default_rng(len(shapes))
+    fields = {name: rng.normal(size=shape) for name, shape in shapes.items()}
+    record = np.zeros((), dtype=[(name, "<f8", shape) for name, shape in shapes.items()])
+    for name, value in fields.items():
+        record[name] = value
     saved = io.BytesIO()
     np.save(saved, record, allow_pickle=False)
-    assert b"".join(npy_chunks(columns)) == saved.getvalue()
+    assert b"".join(npy_chunks(fields)) == saved.getvalue()
 
 
 def test_npy_chunks_send_the_arrays_without_copying_them() -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import asyncio
 import dataclasses
 import inspect
+import io
 import json
 from typing import Any
 
@@ -34,6 +35,7 @@ from pma_client import (
     SScale,
     StrandCountSweep,
 )
+from pma_client import _endpoints as endpoints
 from tests.published import DavisCaldwell2006
 
 MM2 = 1e-6
@@ -69,6 +71,12 @@ POST_ENDPOINTS: dict[str, tuple[str, type, str]] = {
     "opensim_export": ("/api/v1/export/opensim", OpenSimActuator, "OpenSimOut"),
     "hysteresis_sweep": ("/api/v1/sweeps/hysteresis", HysteresisSweep, "HysteresisSweepOut"),
 }
+
+
+def _npy(array: np.ndarray[Any, Any]) -> bytes:
+    saved = io.BytesIO()
+    np.save(saved, array)
+    return saved.getvalue()
 
 
 def _mm2(area_m2: float) -> float:
@@ -218,6 +226,31 @@ def test_hysteresis_defaults_are_the_services(pma: PMAClient) -> None:
 def test_hysteresis_with_a_measured_s_scale(pma: PMAClient) -> None:
     result = pma.hysteresis(**MUSCLE, s_scale=20.0, points=5)
     assert result.s_scale == 20.0
+
+
+def test_hysteresis_comes_as_npy_and_equals_the_json_answer(
+    pma: PMAClient, server_url: str
+) -> None:
+    result = pma.hysteresis(**MUSCLE, points=1001)
+    as_json = httpx.post(f"{server_url}/api/v1/hysteresis", json={**MUSCLE, "points": 1001})
+    for name, value in as_json.json().items():
+        assert np.asarray(getattr(result, name)).tolist() == value, name
+
+
+def test_hysteresis_call_asks_for_npy() -> None:
+    call = endpoints.hysteresis(**MUSCLE)
+    assert call.path == "/api/v1/hysteresis?format=npy"
+    assert call.decode is endpoints.npy_record
+
+
+@pytest.mark.parametrize(
+    "content",
+    [b"", b"not numpy", _npy(np.arange(3.0)), _npy(np.zeros(2, dtype=[("a", "<f8")]))],
+    ids=["empty", "garbage", "plain array", "records"],
+)
+def test_npy_record_refuses_anything_but_one_record(content: bytes) -> None:
+    with pytest.raises(ValueError, match=r"^the \.npy answer is not"):
+        endpoints.npy_record(content)
 
 
 def test_design_reports_warnings_as_dataclasses(pma: PMAClient, paper: DavisCaldwell2006) -> None:
