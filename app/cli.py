@@ -12,10 +12,14 @@ from app.logs import log_config
 from app.server import enable_tcp_nodelay_for_workers, tune_allocator
 from app.settings import LOG_LEVELS, Settings
 
+#: uvicorn's loop setting for several workers (an import string of a loop factory).
+FAIR_ACCEPT_LOOP = "app.server:FairAcceptEventLoop"
+
 
 def _serve(args: argparse.Namespace) -> int:
     tune_allocator()
-    if args.workers > 1:
+    several = args.workers > 1 and not args.reload
+    if several:
         enable_tcp_nodelay_for_workers()
     uvicorn.run(
         "app.main:app",
@@ -28,6 +32,8 @@ def _serve(args: argparse.Namespace) -> int:
         access_log=False,  # app.middleware logs each request as JSON, with its id
         root_path=args.root_path,
         proxy_headers=True,
+        # Several workers share one listener: each takes one connection per wake-up.
+        loop=FAIR_ACCEPT_LOOP if several else "auto",
     )
     return 0
 

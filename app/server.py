@@ -6,10 +6,12 @@ most of its time in page faults, and ``--workers 2`` is slower than one worker.
 
 from __future__ import annotations
 
+import asyncio
 import ctypes
 import ctypes.util
 import os
 import socket
+from typing import Any
 
 import uvicorn.config
 
@@ -63,3 +65,28 @@ def _bind_tcp_socket(self: uvicorn.config.Config) -> socket.socket:
 def enable_tcp_nodelay_for_workers() -> None:
     """Make uvicorn's multi-worker listener IPPROTO_TCP, so connections get TCP_NODELAY."""
     uvicorn.config.Config.bind_socket = _bind_tcp_socket  # type: ignore[method-assign]
+
+
+class FairAcceptEventLoop(asyncio.SelectorEventLoop):
+    """An asyncio loop that accepts one connection each time the listener is ready.
+
+    asyncio accepts up to ``backlog`` (uvicorn: 2048) waiting connections per wake-up. With
+    several workers on one listening socket, whichever wakes first takes a whole burst of
+    connections and keeps them while they live: a client or proxy that opens its keep-alive
+    pool at once lands on one worker, and ``--workers 2`` is no faster than one. Taking one
+    connection per wake-up lets every worker take its turn, as nginx does by default
+    (``multi_accept off``). Used by ``pma-calculator serve`` with more than one worker.
+    """
+
+    def _accept_connection(
+        self,
+        protocol_factory: Any,
+        sock: socket.socket,
+        sslcontext: Any = None,
+        server: Any = None,
+        backlog: int = 100,
+        *timeouts: Any,
+    ) -> None:
+        super()._accept_connection(  # type: ignore[misc]
+            protocol_factory, sock, sslcontext, server, 1, *timeouts
+        )

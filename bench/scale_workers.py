@@ -3,7 +3,8 @@
 ``.venv/bin/python -m bench.scale_workers [--seconds S] [--rounds R] [--connections C]``
 
 The service as deployed, ``pma-calculator serve --workers 1`` against ``--workers 2``
-(app.server's TCP_NODELAY fix for workers > 1 and tune_allocator); nothing is pinned.
+(app.server's TCP_NODELAY fix and fair-accept loop for workers > 1, and tune_allocator);
+nothing is pinned.
 wrk (two threads, ``--connections`` connections) runs unpinned too, alternately
 against the two servers, ``--rounds`` rounds of ``--seconds`` each after a warm-up; figures
 are medians over the rounds.
@@ -20,8 +21,15 @@ worker, because uvicorn binds the multi-worker listener with ``proto`` 0, asynci
 leaves Nagle on for every connection, and each keep-alive response waits ~40 ms for wrk's
 delayed ACK (uvicorn issue #3149; the single-request keep-alive latency row shows it).
 ``pma-calculator serve`` now re-wraps the listener as IPPROTO_TCP (app.server, F1).
-``--stock-uvicorn`` runs both servers with plain ``python -m uvicorn`` (no F1, no F3)
-to reproduce the figures before the fix.
+
+The second finding: wrk opens its keep-alive connections in one burst, and asyncio accepts
+up to 2048 waiting connections per wake-up, so in about half the rounds one worker took all
+64 and kept them (busiest worker 100 %, 0.9-1.0x). ``pma-calculator serve`` now runs
+several workers on ``app.server.FairAcceptEventLoop``, which accepts one connection per
+wake-up (F10); the busiest-worker row shows the split.
+
+``--stock-uvicorn`` runs both servers with plain ``python -m uvicorn`` (no F1, F3 or F10)
+to reproduce the figures before the fixes.
 """
 
 from __future__ import annotations

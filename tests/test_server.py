@@ -1,14 +1,17 @@
-"""Process tuning of pma-calculator serve: TCP_NODELAY with workers, allocator settings."""
+"""Process tuning of pma-calculator serve: the listener with workers, the allocator."""
 
 from __future__ import annotations
 
+import asyncio
 import os
 import socket
 
 import pytest
+import uvicorn
 import uvicorn.config
 
-from app import server
+from app import cli, server
+from app.cli import FAIR_ACCEPT_LOOP
 
 
 def test_multi_worker_listener_is_tcp_so_connections_get_nodelay(
@@ -31,3 +34,54 @@ def test_allocator_settings_reach_worker_processes(monkeypatch: pytest.MonkeyPat
     server.tune_allocator()
     assert os.environ["MALLOC_MMAP_THRESHOLD_"] == str(32 << 20)
     assert os.environ["MALLOC_TOP_PAD_"] == "1234"  # a setting of the operator's wins
+
+
+def _pending_after_one_wakeup(loop: asyncio.AbstractEventLoop, waiting: int) -> int:
+    """Connections left in the listener's queue after the loop handles one readiness."""
+    with socket.create_server(("127.0.0.1", 0)) as listener:
+        clients = [socket.create_connection(listener.getsockname()) for _ in range(waiting)]
+        try:
+            listener.setblocking(False)
+            loop._accept_connection(asyncio.Protocol, listener, None, None, 100)  # type: ignore[attr-defined]
+            left = 0
+            while True:
+                try:
+                    conn, _ = listener.accept()
+                except BlockingIOError:
+                    return left
+                conn.close()
+                left += 1
+        finally:
+            for client in clients:
+                client.close()
+            loop.run_until_complete(asyncio.sleep(0))  # let the accepted one's task finish
+            loop.close()
+
+
+def test_fair_accept_loop_takes_one_connection_per_wakeup() -> None:
+    assert _pending_after_one_wakeup(server.FairAcceptEventLoop(), waiting=5) == 4
+    # asyncio's own loop takes the whole burst: what let one worker take every connection.
+    assert _pending_after_one_wakeup(asyncio.SelectorEventLoop(), waiting=5) == 0
+
+
+def test_uvicorn_loads_the_fair_accept_loop_by_its_import_string() -> None:
+    config = uvicorn.config.Config("app.main:app", loop=FAIR_ACCEPT_LOOP)
+    factory = config.get_loop_factory()
+    assert factory is server.FairAcceptEventLoop
+    loop = factory()
+    try:
+        assert loop.run_until_complete(asyncio.sleep(0, result=42)) == 42
+    finally:
+        loop.close()
+
+
+@pytest.mark.parametrize(("workers", "loop"), [(1, "auto"), (2, FAIR_ACCEPT_LOOP)])
+def test_serve_uses_the_fair_accept_loop_with_several_workers(
+    monkeypatch: pytest.MonkeyPatch, workers: int, loop: str
+) -> None:
+    calls: list[dict[str, object]] = []
+    monkeypatch.setattr(uvicorn.config.Config, "bind_socket", uvicorn.config.Config.bind_socket)
+    monkeypatch.setattr(uvicorn, "run", lambda app, **kwargs: calls.append(kwargs))
+    assert cli.main(["serve", "--workers", str(workers)]) == 0
+    assert calls[0]["loop"] == loop
+    assert calls[0]["workers"] == workers
