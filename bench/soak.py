@@ -51,7 +51,10 @@ WRK_CPU = "1"
 _DIAMETER = {"theoretical_diameter_m": 0.031, "strand_diameter_m": 0.00025}
 _MATERIAL = {"youngs_modulus_pa": 3e9, "poisson_ratio": 0.4}
 
-#: (weight in %, method, path, body): the soak's mix.
+_SWEPT_MUSCLE = {k: v for k, v in PAPER_MUSCLE_BODY.items() if k not in ("pressure_pa", "s_scale")}
+_OPENSIM_FIELDS = ("strand_length_m", "turns", "strand_diameter_m", "strand_count")
+
+#: (weight in %, method, path, body): the soak's mix, every endpoint.
 MIX: list[tuple[int, str, str, dict[str, Any] | None]] = [
     (12, "POST", "/api/v1/min-braid-angle", PAPER_BRAID_BODY),
     (11, "POST", "/api/v1/gap-area", {**PAPER_BRAID_BODY, "parallel_strands": 3}),
@@ -94,9 +97,12 @@ MIX: list[tuple[int, str, str, dict[str, Any] | None]] = [
     ),
     (8, "POST", "/api/v1/hysteresis", {**PAPER_MUSCLE_BODY, "points": 201}),
     (2, "POST", "/api/v1/hysteresis", {**PAPER_MUSCLE_BODY, "points": 100_000}),
-    (6, "GET", "/api/v1/materials", None),
+    (2, "POST", "/api/v1/hysteresis?format=npy", {**PAPER_MUSCLE_BODY, "points": 100_000}),
+    (2, "POST", "/api/v1/sweeps/hysteresis", {**_SWEPT_MUSCLE, "pressures_pa": [1e5, 3e5, 5e5]}),
+    (2, "POST", "/api/v1/export/opensim", {k: PAPER_MUSCLE_BODY[k] for k in _OPENSIM_FIELDS}),
+    (4, "GET", "/api/v1/materials", None),
     (4, "GET", "/api/v1/reference", None),
-    (8, "GET", "/healthz", None),
+    (4, "GET", "/healthz", None),
 ]
 
 
@@ -177,12 +183,12 @@ def main(argv: list[str] | None = None) -> int:
     if args.seconds < warmup + 2 * window:
         raise SystemExit(f"--seconds must be at least warm-up + 2 x --window ({2 * window} s)")
     loop, http = loop_and_http()
-    weights = ", ".join(f"{path.split('/')[-1]} {w}%" for w, _, path, _ in MIX)
+    weights = ", ".join(f"{path.removeprefix('/api/v1/')} {w}%" for w, _, path, _ in MIX)
     header(
         f"soak: {args.seconds:g} s at {args.connections} connections over every endpoint",
         f"pma-calculator serve --workers 1 (loop {loop}, http {http}) pinned to CPU {SERVER_CPU};"
         f" wrk -t1 pinned to CPU {WRK_CPU}",
-        f"mix (per 100 requests): {weights}; the 2 % hysteresis is 100 000 points",
+        f"mix (per 100 requests): {weights}; the 2 % hysteresis requests are 100 000 points",
         f"RSS: VmRSS every 1 s; after warm-up = median of {window} samples from {warmup:g} s,"
         f" end = median of the last {window}",
     )
@@ -210,6 +216,8 @@ def main(argv: list[str] | None = None) -> int:
             print(f"wrk: {' '.join(result.command)}")
         server_log = log.read_text(encoding="utf-8", errors="replace")
     tracebacks = server_log.count("Traceback")
+    # The server runs at --log-level warning: any line is a warning or an error.
+    log_lines = len(server_log.strip().splitlines())
     print()
 
     samples = sampler.samples
@@ -227,6 +235,7 @@ def main(argv: list[str] | None = None) -> int:
     wrk_errors = " ".join(f"{k} {v}" for k, v in result.errors.items())
     table.add("errors", str(errors), "0", errors == 0)
     table.add("  of which", f"wrk: {wrk_errors}; tracebacks in server log {tracebacks}")
+    table.add("server log lines (warnings, errors)", str(log_lines), "0", log_lines == 0)
     table.add("server alive, healthz 200 after the soak", f"{alive}, {healthy}")
     table.add("RSS at start of soak", f"{samples[0][1] / 1024:.1f} MiB")
     table.add("RSS after warm-up", f"{rss_after / 1024:.1f} MiB")

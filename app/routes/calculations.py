@@ -147,7 +147,7 @@ async def hysteresis(
         Query(
             description="csv: the arrays as a CSV table (or Accept: text/csv); npy: a NumPy"
             " .npy file (or Accept: application/x-npy): one record with the JSON answer's"
-            " fields, for large curves: no number formatting, no copy"
+            " fields, for large curves: no number formatting"
         ),
     ] = None,
     accept: Annotated[str | None, Header(include_in_schema=False)] = None,

@@ -123,7 +123,7 @@ def test_npy_chunks_are_the_file_np_save_writes(shapes: dict[str, tuple[int, ...
     assert b"".join(npy_chunks(fields)) == saved.getvalue()
 
 
-def test_npy_chunks_send_the_arrays_without_copying_them() -> None:
+def test_npy_chunks_are_the_arrays_own_buffers() -> None:
     columns = {"a": np.arange(4.0), "b": np.linspace(0.0, 1.0, 4)}
     header, *buffers = npy_chunks(columns)
     assert isinstance(header, bytes)
