@@ -21,7 +21,7 @@ from fastapi import params
 from fastapi.dependencies.models import Dependant
 from fastapi.routing import APIRoute
 from pydantic import BaseModel, ValidationError
-from starlette.requests import Request
+from starlette.requests import ClientDisconnect, Request
 from starlette.responses import Response
 
 Handler = Callable[[Request], Coroutine[Any, Any, Response]]
@@ -51,8 +51,10 @@ class JSONBodyRoute(APIRoute):
             if _declares_json(request.scope["headers"]):
                 try:
                     value = model.model_validate_json(await request.body())
-                except ValidationError:
-                    pass  # FastAPI's handler reports it, in its own words and shape.
+                except (ValidationError, ClientDisconnect):
+                    # FastAPI's handler reports it, in its own words and shape (a body cut
+                    # off by the size limit included: the 413 has already gone).
+                    pass
                 else:
                     response: Response = await endpoint(**{name: value})
                     return response

@@ -141,3 +141,16 @@ def test_small_answers_are_not_gzipped() -> None:
         "/api/v1/min-braid-angle", json=BODY, headers={"accept-encoding": "gzip"}
     )
     assert "content-encoding" not in response.headers
+
+
+def test_a_chunked_body_cut_off_at_the_limit_logs_no_error(
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    with caplog.at_level(logging.WARNING):
+        response = client.post(
+            "/api/v1/min-braid-angle",
+            content=iter([b" " * 1024] * (MAX_BODY_BYTES // 1024 + 2)),
+            headers={"content-type": "application/json"},
+        )
+    assert response.status_code == 413
+    assert [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING] == []
