@@ -10,6 +10,7 @@ import json
 import logging
 import os
 import re
+import sys
 import time
 from collections.abc import Mapping, Sequence
 from typing import Any
@@ -99,22 +100,54 @@ class ServiceMiddleware:
 
 
 class _RequestHeaders:
-    """What the middleware needs from the request headers, read in one pass."""
+    """What the middleware needs from the request headers, read in one pass.
+
+    ``content_length`` is -1 when the body must be counted as it arrives: no length
+    declared (chunked), or a ``Transfer-Encoding`` beside it (h11 then reads the body as
+    chunked and the declared length means nothing), or a length that is not a number.
+    """
 
     __slots__ = ("accepts_gzip", "content_length", "request_id")
 
     def __init__(self, scope: Scope) -> None:
-        self.content_length = -1  # none declared: chunked
+        declared, chunked = -1, False
         self.accepts_gzip = False
         request_id = b""
         for name, value in scope["headers"]:
             if name == b"content-length":
-                self.content_length = int(value) if value.isdigit() else -1
+                declared = _length(value)
+            elif name == b"transfer-encoding":
+                chunked = True
             elif name == b"accept-encoding":
-                self.accepts_gzip = self.accepts_gzip or b"gzip" in value
+                self.accepts_gzip = self.accepts_gzip or _accepts_gzip(value)
             elif name == b"x-request-id" and _REQUEST_ID.match(value.decode("latin-1")):
                 request_id = bytes(value)
+        self.content_length = -1 if chunked else declared
         self.request_id = request_id or os.urandom(16).hex().encode()
+
+
+def _length(value: bytes) -> int:
+    if not value.isdigit():
+        return -1
+    # More digits than any body could have: too large, without int() of a huge string.
+    return int(value) if len(value) <= 18 else sys.maxsize
+
+
+def _accepts_gzip(value: bytes) -> bool:
+    """Whether an ``Accept-Encoding`` value accepts gzip: listed, and not with ``q=0``."""
+    for coding in value.lower().split(b","):
+        name, _, parameters = coding.partition(b";")
+        if name.strip() != b"gzip":
+            continue
+        for parameter in parameters.split(b";"):
+            key, _, weight = parameter.partition(b"=")
+            if key.strip() == b"q":
+                try:
+                    return float(weight) > 0
+                except ValueError:
+                    return False
+        return True
+    return False
 
 
 async def _counting_body(

@@ -2,14 +2,17 @@
 
 from __future__ import annotations
 
+import asyncio
 import json
 import logging
+import socket
 from collections.abc import Iterator
 
 import pytest
 from fastapi import FastAPI, Request
 from fastapi.testclient import TestClient
 from starlette.responses import Response
+from starlette.types import Receive, Scope, Send
 
 from app.main import app
 from app.middleware import MAX_BODY_BYTES, ServiceMiddleware
@@ -154,3 +157,111 @@ def test_a_chunked_body_cut_off_at_the_limit_logs_no_error(
         )
     assert response.status_code == 413
     assert [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING] == []
+
+
+def _raw_http(url: str, head: bytes, body: bytes) -> bytes:
+    """Send ``head`` and ``body`` as they are over a socket; return the status line."""
+    host, port = url.removeprefix("http://").split(":")
+    with socket.create_connection((host, int(port)), timeout=10) as conn:
+        conn.sendall(head + body)
+        return conn.makefile("rb").readline()
+
+
+def test_a_length_beside_chunked_transfer_does_not_lift_the_limit(live_server: str) -> None:
+    # h11 reads such a body as chunked: the small declared length must not be trusted.
+    payload = b" " * (MAX_BODY_BYTES + 1)
+    body = b"%x\r\n%s\r\n0\r\n\r\n" % (len(payload), payload)
+    head = (
+        b"POST /api/v1/min-braid-angle HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+        b"Content-Length: 5\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n"
+    )
+    assert _raw_http(live_server, head, body).startswith(b"HTTP/1.1 413")
+
+
+def _asgi_scope(headers: list[tuple[bytes, bytes]]) -> dict[str, object]:
+    return {
+        "type": "http",
+        "asgi": {"version": "3.0"},
+        "http_version": "1.1",
+        "method": "POST",
+        "scheme": "http",
+        "path": "/echo",
+        "raw_path": b"/echo",
+        "root_path": "",
+        "query_string": b"",
+        "headers": headers,
+        "client": ("127.0.0.1", 50000),
+        "server": ("127.0.0.1", 80),
+    }
+
+
+@pytest.mark.parametrize(
+    "headers",
+    [
+        [(b"content-length", b"5"), (b"transfer-encoding", b"chunked")],
+        [(b"transfer-encoding", b"chunked"), (b"content-length", b"5")],
+        [(b"content-length", b"not a number")],
+    ],
+    ids=["length then chunked", "chunked then length", "garbage length"],
+)
+def test_a_body_whose_length_cannot_be_trusted_is_counted(
+    headers: list[tuple[bytes, bytes]],
+) -> None:
+    sent: list[dict[str, object]] = []
+    chunks = [b"x" * 60, b"x" * 60]
+
+    async def receive() -> dict[str, object]:
+        body = chunks.pop(0) if chunks else b""
+        return {"type": "http.request", "body": body, "more_body": bool(chunks)}
+
+    async def send(message: dict[str, object]) -> None:
+        sent.append(message)
+
+    middleware = ServiceMiddleware(_echo_app(), max_body_bytes=100)
+    asyncio.run(middleware(_asgi_scope(headers), receive, send))  # type: ignore[arg-type]
+    assert sent[0]["status"] == 413
+
+
+def test_a_content_length_of_5000_digits_is_refused_not_crashed() -> None:
+    sent: list[dict[str, object]] = []
+
+    async def receive() -> dict[str, object]:
+        return {"type": "http.request", "body": b"", "more_body": False}
+
+    async def send(message: dict[str, object]) -> None:
+        sent.append(message)
+
+    scope = _asgi_scope([(b"content-length", b"9" * 5000)])
+    asyncio.run(ServiceMiddleware(_echo_app())(scope, receive, send))  # type: ignore[arg-type]
+    assert sent[0]["status"] == 413
+
+
+@pytest.mark.parametrize(
+    ("accept_encoding", "gzip_entered"),
+    [
+        ("gzip", True),
+        ("deflate, gzip", True),
+        ("gzip;q=0.5", True),
+        ("gzip;q=0", False),
+        ("identity, gzip; q=0", False),
+        ("br", False),
+        ("x-gzip-like", False),
+    ],
+)
+def test_gzip_is_entered_only_when_accepted(accept_encoding: str, gzip_entered: bool) -> None:
+    entered: list[str] = []
+    middleware = ServiceMiddleware(_echo_app(), gzip_options={"minimum_size": 10})
+    gzip = middleware.gzip
+
+    async def recording_gzip(scope: Scope, receive: Receive, send: Send) -> None:
+        entered.append(accept_encoding)
+        await gzip(scope, receive, send)
+
+    middleware.gzip = recording_gzip  # type: ignore[assignment]
+    with TestClient(middleware) as echo:
+        response = echo.post(
+            "/echo", content=b"a" * 5000, headers={"accept-encoding": accept_encoding}
+        )
+    assert response.status_code == 200
+    assert bool(entered) is gzip_entered
+    assert (response.headers.get("content-encoding") == "gzip") is gzip_entered
