@@ -33,8 +33,9 @@ class JSONBodyRoute(APIRoute):
     """An :class:`~fastapi.routing.APIRoute` with a short path for valid JSON bodies.
 
     The short path is taken only by an ``async`` endpoint whose one parameter is a pydantic
-    body model and which returns a :class:`~starlette.responses.Response`; any other
-    endpoint keeps FastAPI's handler alone.
+    body model (no validators of its own, nothing else injected) and which returns a
+    :class:`~starlette.responses.Response`; any other endpoint keeps FastAPI's handler
+    alone.
     """
 
     def get_route_handler(self) -> Handler:
@@ -72,16 +73,29 @@ def _sole_body_model(dependant: Dependant) -> tuple[str, type[BaseModel]] | None
         dependant.cookie_params,
         dependant.dependencies,
     )
-    if any(others) or len(dependant.body_params) != 1:
+    if any(others) or len(dependant.body_params) != 1 or _injects_anything(dependant):
         return None
     field = dependant.body_params[0]
-    model = field.field_info.annotation
-    if not (inspect.isclass(model) and issubclass(model, BaseModel)):
-        return None
     info = field.field_info
+    model = info.annotation
+    if not (inspect.isclass(model) and issubclass(model, BaseModel)) or info.metadata:
+        return None  # not a model, or one with validators of its own (Annotated[M, ...])
     if not isinstance(info, params.Body) or isinstance(info, params.Form) or info.embed:
         return None  # a form, a file, or a body embedded under its name
     return field.name, model
+
+
+def _injects_anything(dependant: Dependant) -> bool:
+    """Whether FastAPI passes the endpoint a Request, Response, BackgroundTasks and such."""
+    injected = (
+        dependant.request_param_name,
+        dependant.websocket_param_name,
+        dependant.http_connection_param_name,
+        dependant.response_param_name,
+        dependant.background_tasks_param_name,
+        dependant.security_scopes_param_name,
+    )
+    return any(name is not None for name in injected)
 
 
 def _returns_response(call: Callable[..., Any] | None) -> bool:

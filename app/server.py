@@ -75,7 +75,8 @@ class FairAcceptEventLoop(asyncio.SelectorEventLoop):
     connections and keeps them while they live: a client or proxy that opens its keep-alive
     pool at once lands on one worker, and ``--workers 2`` is no faster than one. Taking one
     connection per wake-up lets every worker take its turn, as nginx does by default
-    (``multi_accept off``). Used by ``pma-calculator serve`` with more than one worker.
+    (``multi_accept off``). Used by ``pma-calculator serve`` with more than one worker, in
+    place of uvicorn's ``auto`` loop (so uvloop, if installed, is not used then).
     """
 
     def _accept_connection(
@@ -86,7 +87,8 @@ class FairAcceptEventLoop(asyncio.SelectorEventLoop):
         server: Any = None,
         backlog: int = 100,
         *timeouts: Any,
+        **options: Any,
     ) -> None:
         super()._accept_connection(  # type: ignore[misc]
-            protocol_factory, sock, sslcontext, server, 1, *timeouts
+            protocol_factory, sock, sslcontext, server, 1, *timeouts, **options
         )

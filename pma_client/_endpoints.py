@@ -59,8 +59,8 @@ def npy_record(content: bytes) -> dict[str, Any]:
         record = np.load(io.BytesIO(content), allow_pickle=False)
     except (EOFError, ValueError) as error:  # empty, cut off, or not .npy at all
         raise ValueError(f"the .npy answer is not a .npy file: {error}") from error
-    names = record.dtype.names
-    if record.shape != () or not names:
+    names = record.dtype.names if isinstance(record, np.ndarray) else None
+    if not names or record.shape != ():
         raise ValueError("the .npy answer is not one record")
     return {name: record[name].item() if record[name].ndim == 0 else record[name] for name in names}
 

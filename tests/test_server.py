@@ -75,13 +75,21 @@ def test_uvicorn_loads_the_fair_accept_loop_by_its_import_string() -> None:
         loop.close()
 
 
-@pytest.mark.parametrize(("workers", "loop"), [(1, "auto"), (2, FAIR_ACCEPT_LOOP)])
+@pytest.mark.parametrize(
+    ("arguments", "loop", "workers"),
+    [
+        (["--workers", "1"], "auto", 1),
+        (["--workers", "2"], FAIR_ACCEPT_LOOP, 2),
+        (["--workers", "2", "--reload"], "auto", None),  # reload runs one process
+    ],
+)
 def test_serve_uses_the_fair_accept_loop_with_several_workers(
-    monkeypatch: pytest.MonkeyPatch, workers: int, loop: str
+    monkeypatch: pytest.MonkeyPatch, arguments: list[str], loop: str, workers: int | None
 ) -> None:
     calls: list[dict[str, object]] = []
     monkeypatch.setattr(uvicorn.config.Config, "bind_socket", uvicorn.config.Config.bind_socket)
+    monkeypatch.setattr(cli, "tune_allocator", lambda: None)  # keep this process untouched
     monkeypatch.setattr(uvicorn, "run", lambda app, **kwargs: calls.append(kwargs))
-    assert cli.main(["serve", "--workers", str(workers)]) == 0
+    assert cli.main(["serve", *arguments]) == 0
     assert calls[0]["loop"] == loop
     assert calls[0]["workers"] == workers

@@ -8,15 +8,17 @@ same status and the same body from both.
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
-from typing import Any
+from collections.abc import Callable, Iterator
+from typing import Annotated, Any
 
 import pytest
-from fastapi import FastAPI
+from fastapi import BackgroundTasks, Body, FastAPI, Request
 from fastapi.routing import APIRoute
 from fastapi.testclient import TestClient
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from pydantic import AfterValidator, BaseModel
+from starlette.responses import PlainTextResponse, Response
 
 import app.routing
 from app.errors import install_error_handlers
@@ -167,3 +169,62 @@ def test_any_body_gets_the_same_answer_as_from_fastapi(
     assert _post(subject, path, content, content_type) == _post(
         reference, path, content, content_type
     )
+
+
+class _Model(BaseModel):
+    x: int
+
+
+def _positive(model: _Model) -> _Model:
+    if model.x <= 0:
+        raise ValueError("x must be positive")
+    return model
+
+
+async def _with_request(body: _Model, request: Request) -> Response:
+    return PlainTextResponse(f"{body.x} {request.url.path}")
+
+
+async def _with_background(body: _Model, tasks: BackgroundTasks) -> Response:
+    return PlainTextResponse(str(body.x))
+
+
+async def _with_validator(body: Annotated[_Model, AfterValidator(_positive)]) -> Response:
+    return PlainTextResponse(str(body.x))
+
+
+async def _embedded(body: Annotated[_Model, Body(embed=True)]) -> Response:
+    return PlainTextResponse(str(body.x))
+
+
+async def _returns_dict(body: _Model) -> dict[str, int]:
+    return {"x": body.x}
+
+
+def _sync(body: _Model) -> Response:
+    return PlainTextResponse(str(body.x))
+
+
+ENDPOINTS_FASTAPI_KEEPS: dict[str, tuple[Callable[..., Any], dict[str, Any]]] = {
+    "request": (_with_request, {"x": 1}),
+    "background tasks": (_with_background, {"x": 1}),
+    "own validator": (_with_validator, {"x": -1}),
+    "embedded body": (_embedded, {"body": {"x": 1}}),
+    "dict result": (_returns_dict, {"x": 1}),
+    "sync endpoint": (_sync, {"x": 1}),
+}
+
+
+@pytest.mark.parametrize("case", ENDPOINTS_FASTAPI_KEEPS)
+def test_endpoints_the_short_path_cannot_serve_keep_fastapis_handler(case: str) -> None:
+    endpoint, body = ENDPOINTS_FASTAPI_KEEPS[case]
+    answers = []
+    for route_class in (APIRoute, JSONBodyRoute):
+        probe = FastAPI()
+        probe.router.add_api_route(
+            "/p", endpoint, methods=["POST"], route_class_override=route_class
+        )
+        with TestClient(probe) as client:
+            response = client.post("/p", json=body)
+        answers.append((response.status_code, response.text))
+    assert answers[0] == answers[1]

@@ -79,6 +79,12 @@ def _npy(array: np.ndarray[Any, Any]) -> bytes:
     return saved.getvalue()
 
 
+def _npz(array: np.ndarray[Any, Any]) -> bytes:
+    saved = io.BytesIO()
+    np.savez(saved, array)
+    return saved.getvalue()
+
+
 def _mm2(area_m2: float) -> float:
     return round(area_m2 / MM2, 2)
 
@@ -245,8 +251,14 @@ def test_hysteresis_call_asks_for_npy() -> None:
 
 @pytest.mark.parametrize(
     "content",
-    [b"", b"not numpy", _npy(np.arange(3.0)), _npy(np.zeros(2, dtype=[("a", "<f8")]))],
-    ids=["empty", "garbage", "plain array", "records"],
+    [
+        b"",
+        b"not numpy",
+        _npy(np.arange(3.0)),
+        _npy(np.zeros(2, dtype=[("a", "<f8")])),
+        _npz(np.arange(3.0)),
+    ],
+    ids=["empty", "garbage", "plain array", "records", "npz archive"],
 )
 def test_npy_record_refuses_anything_but_one_record(content: bytes) -> None:
     with pytest.raises(ValueError, match=r"^the \.npy answer is not"):
