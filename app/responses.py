@@ -46,25 +46,45 @@ def csv_bytes(columns: Mapping[str, npt.NDArray[np.float64]]) -> bytes:
 
 
 class NPYResponse(Response):
-    """``application/x-npy``: a NumPy ``.npy`` file of one record.
-
-    The record (a 0-d structured array) has a float64 field per entry of ``fields``: a
-    number, or a whole curve. ``numpy.load(io.BytesIO(content))["contraction"]`` is the
-    contraction curve. Column by column is how the model computes the curves, so the body
-    is the header and each array's own buffer joined: one copy, no number formatting, no
-    interleaving.
-    """
+    """``application/x-npy``: a NumPy ``.npy`` file; see :func:`npy_table`, :func:`npy_record`."""
 
     media_type = "application/x-npy"
 
-    def __init__(self, fields: Mapping[str, float | npt.NDArray[np.float64]]) -> None:
-        # One bytes body, one send: ASGI bodies are bytes, and a client that leaves
-        # mid-answer costs one failed write, not one per chunk.
-        super().__init__(b"".join(npy_chunks(fields)))
+
+def npy_table(columns: Mapping[str, npt.NDArray[np.float64]]) -> bytes:
+    """A ``.npy`` file of one structured array: a row per point, a float64 field per column.
+
+    ``numpy.load(io.BytesIO(content))["contraction"]``; byte for byte what ``np.save``
+    writes for that table, but the columns are written once, straight into the file's
+    buffer after its header (``np.save`` would build the table, then copy it twice).
+    """
+    names = list(columns)
+    dtype = np.dtype([(name, "<f8") for name in names])
+    rows = len(columns[names[0]])
+    header = _npy_header(dtype, (rows,))
+    # np.empty, not bytearray: every byte is written below, so none is zeroed first.
+    buffer = np.empty(len(header) + dtype.itemsize * rows, dtype=np.uint8)
+    buffer[: len(header)] = np.frombuffer(header, dtype=np.uint8)
+    table = buffer[len(header) :].view(dtype)
+    for name, column in columns.items():
+        table[name] = column
+    return buffer.tobytes()
+
+
+def npy_record(fields: Mapping[str, float | npt.NDArray[np.float64]]) -> bytes:
+    """A ``.npy`` file of one record (a 0-d structured array), a field per entry of ``fields``.
+
+    A field is a number or a whole curve: ``numpy.load(io.BytesIO(content))["contraction"]``
+    is the contraction curve. Column by column is how the model computes the curves, so the
+    file is the header and each array's own buffer joined (:func:`npy_chunks`): one copy,
+    no interleaving. One bytes body, sent at once: ASGI bodies are bytes, and a client that
+    leaves mid-answer costs one failed write, not one per chunk.
+    """
+    return b"".join(npy_chunks(fields))
 
 
 def npy_chunks(fields: Mapping[str, float | npt.NDArray[np.float64]]) -> list[bytes | memoryview]:
-    """The ``.npy`` file of :class:`NPYResponse`: its header, then one buffer per field.
+    """The file of :func:`npy_record` as its header, then one buffer per field.
 
     ``b"".join(npy_chunks(fields))`` is the file ``np.save`` writes for the 0-d record of
     dtype ``[(name, "<f8", shape), ...]`` holding ``fields`` (numbers and 1-D arrays).
@@ -74,15 +94,18 @@ def npy_chunks(fields: Mapping[str, float | npt.NDArray[np.float64]]) -> list[by
     if any(array.ndim > 1 for array in arrays):
         raise ValueError("npy fields must be numbers or 1-D arrays")
     dtype = np.dtype([(name, "<f8", a.shape) for name, a in zip(fields, arrays, strict=True)])
+    return [_npy_header(dtype, ()), *(_raw_bytes(array) for array in arrays)]
+
+
+def _npy_header(dtype: np.dtype[Any], shape: tuple[int, ...]) -> bytes:
+    """The ``.npy`` magic and header of a C-ordered array of ``shape`` ``dtype`` items."""
     header = io.BytesIO()
-    descr = np.lib.format.dtype_to_descr(dtype)
-    np.lib.format.write_array_header_1_0(
-        header, {"descr": descr, "fortran_order": False, "shape": ()}
-    )
-    return [header.getvalue(), *(_raw_bytes(array) for array in arrays)]
+    fields = {"descr": np.lib.format.dtype_to_descr(dtype), "fortran_order": False}
+    np.lib.format.write_array_header_1_0(header, {**fields, "shape": shape})
+    return header.getvalue()
 
 
 def _raw_bytes(array: npt.NDArray[np.float64]) -> bytes | memoryview:
     # A number is 8 bytes, copied; a curve is its own buffer, cast so that len() counts
-    # bytes, as the server counts the body.
+    # bytes.
     return array.tobytes() if array.ndim == 0 else array.data.cast("B")

@@ -7,7 +7,8 @@ from the request to the last response byte, i.e. body parsing and validation, th
 orjson, the middleware (GZip when the client accepts it) and nothing of the client. The
 baseline computes the same arrays with ``hysteresis_curves`` (and the degrees conversion
 the endpoint does). Target: end to end within 3x of the baseline, for each form of the
-answer: JSON, JSON with ``Accept-Encoding: gzip``, and the binary ``?format=npy``.
+answer: JSON, JSON with ``Accept-Encoding: gzip``, and the binary ``.npy`` forms
+(``?format=npy``, a table of rows; ``?format=npy-record``, a record of whole curves).
 
 Subject and baseline are timed in pairs: each of ``--rounds`` rounds takes the best of
 ``--repeat`` runs of the baseline and then of each request, and the figure is the median
@@ -41,7 +42,7 @@ from typing import Any
 import numpy as np
 import orjson
 
-from app.responses import npy_chunks
+from app.responses import npy_record, npy_table
 from app.routes.calculations import curve_columns
 from app.server import tune_allocator
 from bench._common import (
@@ -97,13 +98,15 @@ async def _measure(app: Any, points: int, rounds: int, repeat: int) -> dict[str,
     decoded = orjson.loads(raw.body)
     if len(decoded["force_static_n"]) != points:
         raise SystemExit(f"expected {points} points, got {len(decoded['force_static_n'])}")
-    npy_path = PATH + "?format=npy"
+    npy_path = PATH + "?format=npy-record"
+    table_path = PATH + "?format=npy"
     npy = await asgi_request(app, "POST", npy_path, body, gzipped)
     curves = np.load(io.BytesIO(npy.body)) if npy.status == 200 else None
     if curves is None or curves["force_static_n"].tolist() != decoded["force_static_n"]:
         raise SystemExit(f"{npy_path} answered {npy.status} or the wrong number of rows")
     requests: dict[str, Callable[[], Awaitable[AsgiResponse]]] = {
         "npy": lambda: asgi_request(app, "POST", npy_path, body, gzipped),
+        "table": lambda: asgi_request(app, "POST", table_path, body, gzipped),
         "raw": lambda: asgi_request(app, "POST", PATH, body, plain),
         "gzip": lambda: asgi_request(app, "POST", PATH, body, gzipped),
     }
@@ -160,9 +163,9 @@ def main(argv: list[str] | None = None) -> int:
     t_orjson = best_of(
         lambda: orjson.dumps(content, option=orjson.OPT_SERIALIZE_NUMPY), number=1, repeat=repeat
     )
-    t_npy_file = best_of(
-        lambda: b"".join(npy_chunks(content_columns(content))), number=1, repeat=repeat
-    )
+    columns = content_columns(content)
+    t_npy_file = best_of(lambda: npy_record(columns), number=1, repeat=repeat)
+    t_npy_table = best_of(lambda: npy_table(columns), number=1, repeat=repeat)
     measured = asyncio.run(_measure(app, points, rounds, repeat))
     raw: AsgiResponse = measured["raw"]
     packed: AsgiResponse = measured["packed"]
@@ -175,7 +178,8 @@ def main(argv: list[str] | None = None) -> int:
     for name, label in (
         ("raw", "JSON"),
         ("gzip", "JSON, Accept-Encoding: gzip"),
-        ("npy", "?format=npy (binary)"),
+        ("table", "?format=npy (table of rows)"),
+        ("npy", "?format=npy-record"),
     ):
         ratio = statistics.median(ratios[name])
         table.add(f"end to end, {label}", _ms(times[name]))
@@ -199,9 +203,8 @@ def main(argv: list[str] | None = None) -> int:
     print("breakdown (each part alone, same data, best of runs):")
     parts = Table()
     parts.add("orjson.dumps of the 7 arrays", f"{t_orjson * 1e3:.1f} ms")
-    parts.add(
-        "the .npy body of the 7 arrays (header + buffers joined)", f"{t_npy_file * 1e3:.2f} ms"
-    )
+    parts.add("npy_record of the 7 arrays (header + buffers joined)", f"{t_npy_file * 1e3:.2f} ms")
+    parts.add("npy_table of the 7 arrays (rows interleaved)", f"{t_npy_table * 1e3:.2f} ms")
     for level, (seconds, size) in levels.items():
         parts.add(
             f"gzip level {level} of the JSON body",

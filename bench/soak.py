@@ -97,7 +97,8 @@ MIX: list[tuple[int, str, str, dict[str, Any] | None]] = [
     ),
     (8, "POST", "/api/v1/hysteresis", {**PAPER_MUSCLE_BODY, "points": 201}),
     (2, "POST", "/api/v1/hysteresis", {**PAPER_MUSCLE_BODY, "points": 100_000}),
-    (2, "POST", "/api/v1/hysteresis?format=npy", {**PAPER_MUSCLE_BODY, "points": 100_000}),
+    (1, "POST", "/api/v1/hysteresis?format=npy", {**PAPER_MUSCLE_BODY, "points": 100_000}),
+    (1, "POST", "/api/v1/hysteresis?format=npy-record", {**PAPER_MUSCLE_BODY, "points": 100_000}),
     (2, "POST", "/api/v1/sweeps/hysteresis", {**_SWEPT_MUSCLE, "pressures_pa": [1e5, 3e5, 5e5]}),
     (2, "POST", "/api/v1/export/opensim", {k: PAPER_MUSCLE_BODY[k] for k in _OPENSIM_FIELDS}),
     (4, "GET", "/api/v1/materials", None),
@@ -188,7 +189,8 @@ def main(argv: list[str] | None = None) -> int:
         f"soak: {args.seconds:g} s at {args.connections} connections over every endpoint",
         f"pma-calculator serve --workers 1 (loop {loop}, http {http}) pinned to CPU {SERVER_CPU};"
         f" wrk -t1 pinned to CPU {WRK_CPU}",
-        f"mix (per 100 requests): {weights}; the 2 % hysteresis requests are 100 000 points",
+        f"mix (per 100 requests): {weights}; the 2 % and 1 % hysteresis requests are"
+        " 100 000 points",
         f"RSS: VmRSS every 1 s; after warm-up = median of {window} samples from {warmup:g} s,"
         f" end = median of the last {window}",
     )

@@ -299,7 +299,7 @@ def hysteresis(
     """
     # The curves come as a .npy record: with 100 000 points, formatting them as JSON takes
     # the service ten times longer than computing them.
-    call = _post("/api/v1/hysteresis?format=npy", Hysteresis.from_json, locals())
+    call = _post("/api/v1/hysteresis?format=npy-record", Hysteresis.from_json, locals())
     return replace(call, decode=npy_record)
 
 

@@ -10,7 +10,14 @@ from fastapi import APIRouter, Header, Query
 from starlette.responses import Response
 
 from app.errors import core_errors
-from app.responses import CSVResponse, JSONResponse, NPYResponse, csv_bytes
+from app.responses import (
+    CSVResponse,
+    JSONResponse,
+    NPYResponse,
+    csv_bytes,
+    npy_record,
+    npy_table,
+)
 from app.routing import JSONBodyRoute
 from app.schemas import (
     FailureStrandCountIn,
@@ -143,19 +150,21 @@ _TABLES: dict[int | str, dict[str, Any]] = {
 async def hysteresis(
     body: HysteresisIn,
     format: Annotated[
-        Literal["json", "csv", "npy"] | None,
+        Literal["json", "csv", "npy", "npy-record"] | None,
         Query(
             description="csv: the arrays as a CSV table (or Accept: text/csv); npy: a NumPy"
-            " .npy file (or Accept: application/x-npy): one record with the JSON answer's"
-            " fields, for large curves: no number formatting"
+            " .npy file of one structured array, a row per point and a field per array (or"
+            " Accept: application/x-npy); npy-record: a .npy file of one record with the"
+            " JSON answer's fields, numbers and whole arrays, the fastest for large curves"
         ),
     ] = None,
     accept: Annotated[str | None, Header(include_in_schema=False)] = None,
 ) -> Response:
     """Static force and both friction branches along the stroke (eqs 10, 29-31).
 
-    JSON by default; the arrays as a CSV table (``?format=csv`` or ``Accept: text/csv``) or
-    as a NumPy ``.npy`` file (``?format=npy`` or ``Accept: application/x-npy``).
+    JSON by default; the arrays as a CSV table (``?format=csv`` or ``Accept: text/csv``), as
+    a NumPy ``.npy`` table of rows (``?format=npy`` or ``Accept: application/x-npy``), or
+    as a ``.npy`` record of the JSON answer's fields (``?format=npy-record``).
     """
     with core_errors(HysteresisIn.model_fields):
         geo = body.geometry(need_length=True)
@@ -183,7 +192,9 @@ async def hysteresis(
         "max_braid_angle_deg": _deg(curves.max_braid_angle_rad),
     }
     if table == "npy":
-        return NPYResponse({**scalars, **arrays})
+        return NPYResponse(npy_table(arrays))
+    if table == "npy-record":
+        return NPYResponse(npy_record({**scalars, **arrays}))
     return JSONResponse({**scalars, **arrays})
 
 

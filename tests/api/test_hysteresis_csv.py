@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.main import app
-from app.responses import npy_chunks
+from app.responses import npy_chunks, npy_record, npy_table
 
 client = TestClient(app)
 BODY = {
@@ -90,12 +90,23 @@ def test_large_csv_is_gzipped_when_accepted() -> None:
         ("/api/v1/hysteresis", {"Accept": "application/x-npy"}),
     ],
 )
-def test_npy_is_a_record_of_the_json_answer(path: str, headers: dict[str, str]) -> None:
+def test_npy_is_a_structured_array_of_the_json_arrays(path: str, headers: dict[str, str]) -> None:
     as_json = client.post("/api/v1/hysteresis", json=BODY).json()
     response = client.post(path, json=BODY, headers={**headers, "Accept-Encoding": "gzip"})
     assert response.status_code == 200
     assert response.headers["content-type"] == "application/x-npy"
     assert "content-encoding" not in response.headers  # raw floats are not worth gzipping
+    table = np.load(io.BytesIO(response.content), allow_pickle=False)
+    assert table.dtype.names == tuple(COLUMNS)
+    for column in COLUMNS:
+        assert table[column].tolist() == as_json[column]
+
+
+def test_npy_record_is_the_json_answer() -> None:
+    as_json = client.post("/api/v1/hysteresis", json=BODY).json()
+    response = client.post("/api/v1/hysteresis?format=npy-record", json=BODY)
+    assert response.status_code == 200
+    assert response.headers["content-type"] == "application/x-npy"
     record = np.load(io.BytesIO(response.content), allow_pickle=False)
     assert record.shape == ()
     assert record.dtype.names == tuple(as_json)
@@ -103,16 +114,32 @@ def test_npy_is_a_record_of_the_json_answer(path: str, headers: dict[str, str]) 
         assert record[name].tolist() == value, name
 
 
+_NAMES = st.from_regex(r"[a-z_]{1,12}", fullmatch=True)
+
+
+@settings(max_examples=40, deadline=None)
+@given(rows=st.integers(0, 300), names=st.lists(_NAMES, min_size=1, max_size=8, unique=True))
+def test_npy_table_is_the_file_np_save_writes(rows: int, names: list[str]) -> None:
+    rng = np.random.default_rng(rows)
+    columns = {name: rng.normal(size=rows) for name in names}
+    table = np.empty(rows, dtype=[(name, "<f8") for name in names])
+    for name, column in columns.items():
+        table[name] = column
+    saved = io.BytesIO()
+    np.save(saved, table, allow_pickle=False)
+    assert npy_table(columns) == saved.getvalue()
+
+
 @settings(max_examples=40, deadline=None)
 @given(
     shapes=st.dictionaries(
-        st.from_regex(r"[a-z_]{1,12}", fullmatch=True),
+        _NAMES,
         st.sampled_from([(), (0,), (1,), (7,), (300,)]),
         min_size=1,
         max_size=8,
     ),
 )
-def test_npy_chunks_are_the_file_np_save_writes(shapes: dict[str, tuple[int, ...]]) -> None:
+def test_npy_record_is_the_file_np_save_writes(shapes: dict[str, tuple[int, ...]]) -> None:
     rng = np.random.default_rng(len(shapes))
     fields = {name: rng.normal(size=shape) for name, shape in shapes.items()}
     record = np.zeros((), dtype=[(name, "<f8", shape) for name, shape in shapes.items()])
@@ -120,7 +147,7 @@ def test_npy_chunks_are_the_file_np_save_writes(shapes: dict[str, tuple[int, ...
         record[name] = value
     saved = io.BytesIO()
     np.save(saved, record, allow_pickle=False)
-    assert b"".join(npy_chunks(fields)) == saved.getvalue()
+    assert npy_record(fields) == saved.getvalue()
 
 
 def test_npy_chunks_are_the_arrays_own_buffers() -> None:

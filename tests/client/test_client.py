@@ -245,7 +245,7 @@ def test_hysteresis_comes_as_npy_and_equals_the_json_answer(
 
 def test_hysteresis_call_asks_for_npy() -> None:
     call = endpoints.hysteresis(**MUSCLE)
-    assert call.path == "/api/v1/hysteresis?format=npy"
+    assert call.path == "/api/v1/hysteresis?format=npy-record"
     assert call.decode is endpoints.npy_record
 
 
