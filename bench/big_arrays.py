@@ -210,11 +210,6 @@ def main(argv: list[str] | None = None) -> int:
             f"gzip level {level} of the JSON body",
             f"{seconds * 1e3:.0f} ms -> {size / 1e6:.2f} MB",
         )
-    rest = min(times["raw"]) - min(times["core"]) - t_orjson
-    parts.add(
-        "rest of the JSON request (bests)",
-        f"{rest * 1e3:.1f} ms (validation, routing, middleware, copies)",
-    )
     parts.print()
     return 0
 
