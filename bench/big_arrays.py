@@ -35,7 +35,6 @@ import json
 import resource
 import statistics
 import time
-import timeit
 from collections.abc import Awaitable, Callable, Sequence
 from typing import Any
 
@@ -74,10 +73,6 @@ async def _best(call: Callable[[], Awaitable[AsgiResponse]], repeat: int) -> flo
     return min(times)
 
 
-def _best_sync(call: Callable[[], object], repeat: int) -> float:
-    return min(timeit.repeat(call, number=1, repeat=repeat))
-
-
 def _gzip_seconds(raw: bytes, level: int, repeat: int) -> tuple[float, int]:
     size = len(gzip.compress(raw, compresslevel=level))
     return best_of(lambda: gzip.compress(raw, compresslevel=level), number=1, repeat=repeat), size
@@ -113,7 +108,7 @@ async def _measure(app: Any, points: int, rounds: int, repeat: int) -> dict[str,
     times: dict[str, list[float]] = {name: [] for name in ("core", *requests)}
     ratios: dict[str, list[float]] = {name: [] for name in requests}
     for round_ in range(rounds):
-        core = _best_sync(lambda: compute(points), repeat)
+        core = best_of(lambda: compute(points), number=1, repeat=repeat)
         times["core"].append(core)
         for name, call in requests.items():
             if name == "gzip" and round_ % 3:

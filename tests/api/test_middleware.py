@@ -207,33 +207,33 @@ def _asgi_scope(headers: list[tuple[bytes, bytes]]) -> dict[str, object]:
 def test_a_body_whose_length_cannot_be_trusted_is_counted(
     headers: list[tuple[bytes, bytes]],
 ) -> None:
-    sent: list[dict[str, object]] = []
-    chunks = [b"x" * 60, b"x" * 60]
-
-    async def receive() -> dict[str, object]:
-        body = chunks.pop(0) if chunks else b""
-        return {"type": "http.request", "body": body, "more_body": bool(chunks)}
-
-    async def send(message: dict[str, object]) -> None:
-        sent.append(message)
-
     middleware = ServiceMiddleware(_echo_app(), max_body_bytes=100)
-    asyncio.run(middleware(_asgi_scope(headers), receive, send))  # type: ignore[arg-type]
+    sent = _run_asgi(middleware, _asgi_scope(headers), [b"x" * 60, b"x" * 60])
     assert sent[0]["status"] == 413
 
 
 def test_a_content_length_of_5000_digits_is_refused_not_crashed() -> None:
+    scope = _asgi_scope([(b"content-length", b"9" * 5000)])
+    sent = _run_asgi(ServiceMiddleware(_echo_app()), scope, [b""])
+    assert sent[0]["status"] == 413
+
+
+def _run_asgi(
+    app: ServiceMiddleware, scope: dict[str, object], chunks: list[bytes]
+) -> list[dict[str, object]]:
+    """Drive ``app`` with a body of ``chunks``; return the messages it sent."""
     sent: list[dict[str, object]] = []
+    pending = list(chunks)
 
     async def receive() -> dict[str, object]:
-        return {"type": "http.request", "body": b"", "more_body": False}
+        body = pending.pop(0) if pending else b""
+        return {"type": "http.request", "body": body, "more_body": bool(pending)}
 
     async def send(message: dict[str, object]) -> None:
         sent.append(message)
 
-    scope = _asgi_scope([(b"content-length", b"9" * 5000)])
-    asyncio.run(ServiceMiddleware(_echo_app())(scope, receive, send))  # type: ignore[arg-type]
-    assert sent[0]["status"] == 413
+    asyncio.run(app(scope, receive, send))  # type: ignore[arg-type]
+    return sent
 
 
 @pytest.mark.parametrize(
